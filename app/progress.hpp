@@ -1,0 +1,22 @@
+#pragma once
+// Progress of a long run on a terminal: stage, simulated time, step, ETA. Silent when
+// stderr is not a terminal (logs stay clean) or with --quiet.
+#include <chrono>
+#include <string>
+
+namespace pilempm::app {
+
+class TerminalProgress {
+public:
+    TerminalProgress(std::string stage, bool enabled);
+    void update(double time, double duration, long step);
+    void done();
+
+private:
+    std::string stage_;
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_, last_;
+    bool printed_ = false;
+};
+
+}  // namespace pilempm::app

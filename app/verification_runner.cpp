@@ -1,0 +1,75 @@
+#include "app/verification_runner.hpp"
+
+#include <cstdio>
+#include <memory>
+
+namespace pilempm::app {
+
+using coupling::VerificationCheck;
+
+std::vector<VerificationCheck> run_verification(const io::PileWaveCase& c,
+                                                const coupling::PileWaveSetup& setup,
+                                                const coupling::PileWaveResult& result,
+                                                io::JsonObject& details, bool quiet) {
+    std::vector<VerificationCheck> all;
+    auto append = [&all](std::vector<VerificationCheck> v) {
+        all.insert(all.end(), v.begin(), v.end());
+    };
+    for (const auto& name : c.verification_checks) {
+        if (name == "rigid_ram_decay") append(coupling::check_rigid_ram_decay(setup, result));
+        else if (name == "elastic_ram_pulse") append(coupling::check_elastic_ram_pulse(setup, result));
+        else if (name == "toe_reflection") append(coupling::check_toe_reflection(setup, result));
+        else if (name == "energy_conservation") append(coupling::check_energy_conservation(setup, result));
+        else if (name == "rod_axisymmetric_agreement") {
+            // The twin: same case, rod model, same element size along the axis.
+            const auto rod_setup = io::build_pile_wave_setup(c, io::PileModel::Rod, c.element_size);
+            const auto rod = coupling::run_pile_wave(rod_setup);
+            append(coupling::check_model_agreement(result, rod));
+            details.add("rod_peak_head_force_N", rod.summary.peak_head_force)
+                .add("axisymmetric_peak_head_force_N", result.summary.peak_head_force);
+        } else if (name == "mesh_convergence") {
+            std::vector<double> sizes;
+            std::vector<coupling::PileWaveSetup> setups;
+            std::vector<coupling::PileWaveResult> results;
+            for (int k = 0; k < c.refinements; ++k) {
+                const double h = c.element_size / (1 << k);
+                sizes.push_back(h);
+                setups.push_back(io::build_pile_wave_setup(c, c.model, h));
+                setups.back().snapshot_interval = 0.0;
+                results.push_back(k == 0 ? result : coupling::run_pile_wave(setups.back()));
+                if (!quiet) std::fprintf(stderr, "mesh convergence: element size %.4g m done\n", h);
+            }
+            const auto study = coupling::convergence_of_peak_toe_stress(sizes, setups, results);
+            append(coupling::check_mesh_convergence(study));
+            details.add("element_sizes_m", study.element_sizes)
+                .add("peak_toe_stress_Pa", study.peak_toe_stress)
+                .add("reference_peak_toe_stress_Pa", study.reference)
+                .add("observed_order", study.observed_order);
+            if (!quiet)
+                std::printf("mesh convergence of the peak toe stress: observed order %.2f\n",
+                            study.observed_order);
+        }
+    }
+    return all;
+}
+
+io::JsonObject verification_json(const io::PileWaveCase& c, const std::vector<VerificationCheck>& checks,
+                                 const io::JsonObject& details) {
+    std::vector<io::JsonObject> list;
+    bool all_passed = !checks.empty();
+    for (const auto& k : checks) {
+        io::JsonObject o;
+        o.add("name", k.name).add("computed", k.computed).add("reference", k.reference)
+            .add("tolerance", k.tolerance)
+            .add("tolerance_kind", std::string(k.at_least ? "at_least" : k.relative ? "relative" : "absolute"))
+            .add("passed", k.passed).add("note", k.note);
+        list.push_back(std::move(o));
+        all_passed = all_passed && k.passed;
+    }
+    io::JsonObject root;
+    root.add("case", c.file).add("title", c.title).add("all_passed", all_passed).add("checks", list)
+        .add("details", std::make_shared<io::JsonObject>(details));
+    return root;
+}
+
+}  // namespace pilempm::app

@@ -1,0 +1,228 @@
+#include "coupling/pile_wave_verification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+
+namespace pilempm::coupling {
+namespace {
+
+struct Series {
+    const std::vector<double>& t;
+    const std::vector<double>& y;
+};
+Series column(const Table& table, const std::string& name) {
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+        if (table.columns[c] == name) return {table.data[0], table.data[c]};
+    throw std::out_of_range("table " + table.name + " has no column " + name);
+}
+
+// Index of the extreme of `sign * y` within [t0, t1].
+std::size_t arg_extreme(const Series& s, double t0, double t1, double sign) {
+    std::size_t best = 0;
+    double v = -1e300;
+    for (std::size_t i = 0; i < s.t.size(); ++i) {
+        if (s.t[i] < t0 || s.t[i] > t1) continue;
+        if (sign * s.y[i] > v) {
+            v = sign * s.y[i];
+            best = i;
+        }
+    }
+    return best;
+}
+
+double value_at(const Series& s, double t) {
+    const auto it = std::lower_bound(s.t.begin(), s.t.end(), t);
+    if (it == s.t.begin()) return s.y.front();
+    if (it == s.t.end()) return s.y.back();
+    const std::size_t i = static_cast<std::size_t>(it - s.t.begin());
+    const double w = (t - s.t[i - 1]) / (s.t[i] - s.t[i - 1]);
+    return (1 - w) * s.y[i - 1] + w * s.y[i];
+}
+
+// First time after t_from that y crosses `level` going in direction `rising`.
+double crossing(const Series& s, double level, double t_from, bool rising) {
+    for (std::size_t i = 1; i < s.t.size(); ++i) {
+        if (s.t[i] < t_from) continue;
+        const double a = s.y[i - 1] - level, b = s.y[i] - level;
+        if ((rising && a < 0 && b >= 0) || (!rising && a > 0 && b <= 0))
+            return s.t[i - 1] + (s.t[i] - s.t[i - 1]) * a / (a - b);
+    }
+    return s.t.back();
+}
+
+double round_trip(const PileWaveResult& r) { return 2.0 * r.summary.pile_length / r.summary.wave_speed; }
+
+}  // namespace
+
+VerificationCheck make_check(std::string name, double computed, double reference,
+                             double tolerance, bool relative, std::string note) {
+    VerificationCheck c{std::move(name), computed, reference, tolerance, relative, false, false,
+                        std::move(note)};
+    const double err = std::abs(computed - reference);
+    c.passed = std::isfinite(computed) && err <= tolerance * (relative ? std::abs(reference) : 1.0);
+    return c;
+}
+
+std::vector<VerificationCheck> check_rigid_ram_decay(const PileWaveSetup& s, const PileWaveResult& r) {
+    const auto& rc = s.hammer.ram_cushion;
+    const double Z = r.summary.head_impedance, m = rc.ram.mass, v0 = rc.impact_velocity;
+    const double g = rc.gravity, tau = m / Z;
+    if (tau >= round_trip(r))
+        throw std::invalid_argument("rigid_ram_decay: m/Z must be shorter than 2L/c");
+    const Series f = column(r.table("pile_head"), "force_compression_N");
+    const double peak = f.y[arg_extreme(f, 0.0, round_trip(r), 1.0)];
+    const double exact_tau = (Z * v0 - m * g) * std::exp(-1.0) + m * g;
+    const double exact_2tau = (Z * v0 - m * g) * std::exp(-2.0) + m * g;
+    std::vector<VerificationCheck> out;
+    out.push_back(make_check("peak_head_force_N", peak, Z * v0, 0.02, true, "F(0) = Z v0"));
+    out.push_back(make_check("head_force_at_one_time_constant_N", value_at(f, tau), exact_tau, 0.02,
+                             true, "t = m/Z"));
+    if (2 * tau < round_trip(r))
+        out.push_back(make_check("head_force_at_two_time_constants_N", value_at(f, 2 * tau),
+                                 exact_2tau, 0.02, true, "t = 2 m/Z"));
+    return out;
+}
+
+std::vector<VerificationCheck> check_elastic_ram_pulse(const PileWaveSetup& s, const PileWaveResult& r) {
+    const auto& rc = s.hammer.ram_cushion;
+    if (!rc.ram.elastic) throw std::invalid_argument("elastic_ram_pulse needs an elastic ram");
+    const double c_ram = std::sqrt(rc.ram.youngs_modulus / rc.ram.density);
+    const double Zr = rc.ram.mass / (rc.ram.density * rc.ram.length) *
+                      std::sqrt(rc.ram.youngs_modulus * rc.ram.density);
+    const double Zp = r.summary.head_impedance;
+    const double amplitude_ref = Zp * Zr / (Zp + Zr) * rc.impact_velocity;
+    const double duration_ref = 2.0 * rc.ram.length / c_ram;
+    if (duration_ref >= round_trip(r))
+        throw std::invalid_argument("elastic_ram_pulse: the pulse must end before 2L/c");
+    const Series f = column(r.table("pile_head"), "force_compression_N");
+    // Plateau: mean over the middle half of the expected pulse.
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < f.t.size(); ++i)
+        if (f.t[i] >= 0.25 * duration_ref && f.t[i] <= 0.75 * duration_ref) sum += f.y[i], ++n;
+    const double amplitude = n ? sum / n : 0.0;
+    const double t_up = crossing(f, 0.5 * amplitude, 0.0, true);
+    const double t_down = crossing(f, 0.5 * amplitude, t_up, false);
+    return {make_check("pulse_amplitude_N", amplitude, amplitude_ref, 0.02, true,
+                       "Z_p Z_r / (Z_p + Z_r) v0"),
+            make_check("pulse_duration_s", t_down - t_up, duration_ref, 0.02, true,
+                       "2 L_ram / c_ram, between half-amplitude crossings")};
+}
+
+std::vector<VerificationCheck> check_toe_reflection(const PileWaveSetup& s, const PileWaveResult& r) {
+    if (s.hammer.kind != HammerKind::PrescribedForce || s.gauge_depths.empty())
+        throw std::invalid_argument("toe_reflection needs a prescribed force and a gauge at mid-length");
+    const double L = r.summary.pile_length, c = r.summary.wave_speed, dt = r.summary.time_step;
+    const double T = s.hammer.force.end_time();
+    if (T >= L / c) throw std::invalid_argument("toe_reflection: the pulse must be shorter than L/c");
+    std::vector<VerificationCheck> out;
+    const Series v = column(r.table("pile_head"), "velocity_down_m_s");
+    const std::size_t i_out = arg_extreme(v, 0.0, T, 1.0);
+    const double t_out = v.t[i_out];
+    const double sign = s.toe.condition == fem::ToeCondition::Fixed ? -1.0 : 1.0;
+    const std::size_t i_back = arg_extreme(v, t_out + 0.75 * round_trip(r), t_out + 1.25 * round_trip(r), sign);
+    out.push_back(make_check("return_time_at_head_s", v.t[i_back] - t_out, 2.0 * L / c, dt, false,
+                             "2 L / c within one time step"));
+
+    const Table& gauge = r.tables.at(3);  // the first gauge, at mid-length
+    const Series g = column(gauge, "force_compression_N");
+    const double incident = g.y[arg_extreme(g, 0.0, L / c, 1.0)];
+    if (s.toe.condition == fem::ToeCondition::Free) {
+        const double tension = -g.y[arg_extreme(g, 0.0, round_trip(r), -1.0)];
+        out.push_back(make_check("reflected_tension_N", tension, incident, 0.03, true,
+                                 "free toe: compression returns as equal tension"));
+    } else if (s.toe.condition == fem::ToeCondition::Fixed) {
+        const Series toe = column(r.table("toe"), "force_compression_N");
+        const double peak = toe.y[arg_extreme(toe, 0.0, 1.5 * L / c, 1.0)];
+        out.push_back(make_check("toe_force_N", peak, 2.0 * incident, 0.03, true,
+                                 "fixed toe: the toe force doubles the incident force"));
+    }
+    return out;
+}
+
+std::vector<VerificationCheck> check_energy_conservation(const PileWaveSetup& s, const PileWaveResult& r) {
+    if (s.hammer.kind != HammerKind::PrescribedForce)
+        throw std::invalid_argument("energy_conservation needs a prescribed force");
+    const Table& e = r.table("energy");
+    const double t_end = s.hammer.force.end_time();
+    const auto& t = e.data[0];
+    double work_end = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const double stored = e.data[1][i] + e.data[2][i] + e.data[5][i];  // kinetic + strain + dashpot
+        if (t[i] <= t_end) {
+            work_end = e.data[6][i];
+            continue;
+        }
+        worst = std::max(worst, std::abs(stored - work_end) / work_end);
+    }
+    const double trips = (t.back() - t_end) / round_trip(r);
+    VerificationCheck cover = make_check("round_trips_after_load", trips, 5.0, 0.0, false,
+                                         "at least 5 round trips 2L/c after the load ends");
+    cover.at_least = true;
+    cover.passed = trips >= 5.0;
+    return {make_check("max_energy_error_relative", worst, 0.0, 0.005, false,
+                       "|kinetic + strain - work of the load| / work after the load"),
+            cover};
+}
+
+std::vector<VerificationCheck> check_model_agreement(const PileWaveResult& solid,
+                                                     const PileWaveResult& rod) {
+    const double L = solid.summary.pile_length, c = solid.summary.wave_speed;
+    const Series ts = column(solid.table("toe"), "force_compression_N");
+    const Series tr = column(rod.table("toe"), "force_compression_N");
+    const double window = 1.5 * L / c;
+    const double t_solid = ts.t[arg_extreme(ts, 0.0, window, 1.0)];
+    const double t_rod = tr.t[arg_extreme(tr, 0.0, window, 1.0)];
+    const double tol = std::max(2.0 * std::max(solid.summary.time_step, rod.summary.time_step), 0.01 * L / c);
+    return {make_check("peak_head_force_N", solid.summary.peak_head_force, rod.summary.peak_head_force,
+                       0.03, true, "axisymmetric solid (computed) against rod (reference)"),
+            make_check("toe_peak_arrival_s", t_solid, t_rod, tol, false,
+                       "time of the peak toe force, solid against rod")};
+}
+
+ConvergenceStudy convergence_of_peak_toe_stress(const std::vector<double>& sizes,
+                                                const std::vector<PileWaveSetup>& setups,
+                                                const std::vector<PileWaveResult>& results) {
+    ConvergenceStudy st;
+    st.element_sizes = sizes;
+    for (const auto& r : results) {
+        const Series f = column(r.table("toe"), "force_compression_N");
+        st.peak_toe_stress.push_back(*std::max_element(f.y.begin(), f.y.end()) / r.summary.toe_area);
+    }
+    st.reference = 2.0 * setups.back().hammer.force.peak / results.back().summary.toe_area;
+    const std::size_t n = st.peak_toe_stress.size();
+    if (n >= 2) {
+        const double e1 = std::abs(st.peak_toe_stress[n - 2] - st.reference);
+        const double e2 = std::abs(st.peak_toe_stress[n - 1] - st.reference);
+        st.observed_order = std::log(e1 / e2) / std::log(sizes[n - 2] / sizes[n - 1]);
+    }
+    return st;
+}
+
+std::vector<VerificationCheck> check_mesh_convergence(const ConvergenceStudy& st) {
+    std::vector<VerificationCheck> out;
+    const std::size_t n = st.peak_toe_stress.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        char note[96];
+        std::snprintf(note, sizeof note, "element size %.4g m", st.element_sizes[k]);
+        auto c = make_check("peak_toe_stress_Pa_h" + std::to_string(k), st.peak_toe_stress[k],
+                            st.reference, k + 1 == n ? 0.01 : 0.10, true, note);
+        out.push_back(c);
+    }
+    const double e0 = std::abs(st.peak_toe_stress.front() - st.reference);
+    const double e1 = std::abs(st.peak_toe_stress.back() - st.reference);
+    auto dec = make_check("error_reduction_coarse_to_fine", e1 / std::max(e0, 1e-300), 0.0, 1.0, false,
+                          "error of the finest mesh over that of the coarsest, below 1");
+    dec.passed = e1 < e0;
+    out.push_back(dec);
+    auto order = make_check("observed_order", st.observed_order, 1.0, 0.0, false,
+                            "order of convergence from the two finest meshes, at least 1");
+    order.at_least = true;
+    order.passed = st.observed_order >= 1.0;
+    out.push_back(order);
+    return out;
+}
+
+}  // namespace pilempm::coupling

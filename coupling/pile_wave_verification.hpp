@@ -1,0 +1,49 @@
+#pragma once
+// Closed-form checks of a pile wave run (issue: verification 1-6). Each returns named
+// comparisons of a computed number with its reference and a stated tolerance.
+#include <string>
+#include <vector>
+
+#include "coupling/pile_wave.hpp"
+
+namespace pilempm::coupling {
+
+struct VerificationCheck {
+    std::string name;
+    double computed = 0.0;
+    double reference = 0.0;
+    double tolerance = 0.0;
+    bool relative = true;      // |c - r| <= tol |r|, else |c - r| <= tol
+    bool at_least = false;     // passes when computed >= reference (a coverage check)
+    bool passed = false;
+    std::string note;
+};
+
+VerificationCheck make_check(std::string name, double computed, double reference,
+                             double tolerance, bool relative, std::string note = "");
+
+// Rigid ram of mass m on the pile, no cushion: F = (Z v0 - m g) exp(-t Z/m) + m g.
+std::vector<VerificationCheck> check_rigid_ram_decay(const PileWaveSetup& s, const PileWaveResult& r);
+// Elastic ram: rectangular pulse of Z_p Z_r / (Z_p + Z_r) v0 lasting 2 L_ram / c_ram.
+std::vector<VerificationCheck> check_elastic_ram_pulse(const PileWaveSetup& s, const PileWaveResult& r);
+// Prescribed pulse: return at 2L/c; free toe -> tension of equal size; fixed -> toe force x2.
+std::vector<VerificationCheck> check_toe_reflection(const PileWaveSetup& s, const PileWaveResult& r);
+// Prescribed pulse, no damping: stored energy after the load equals its work (0.5 %).
+std::vector<VerificationCheck> check_energy_conservation(const PileWaveSetup& s, const PileWaveResult& r);
+// Axisymmetric solid against rod: peak head force (3 %) and arrival times at the toe.
+std::vector<VerificationCheck> check_model_agreement(const PileWaveResult& solid,
+                                                     const PileWaveResult& rod);
+
+struct ConvergenceStudy {
+    std::vector<double> element_sizes;
+    std::vector<double> peak_toe_stress;  // Pa, compression
+    double reference = 0.0;
+    double observed_order = 0.0;  // from the two finest meshes
+};
+// Peak toe stress of a fixed toe under a half-sine pulse: 2 F0 / A_toe.
+ConvergenceStudy convergence_of_peak_toe_stress(const std::vector<double>& sizes,
+                                                const std::vector<PileWaveSetup>& setups,
+                                                const std::vector<PileWaveResult>& results);
+std::vector<VerificationCheck> check_mesh_convergence(const ConvergenceStudy& study);
+
+}  // namespace pilempm::coupling
