@@ -19,6 +19,7 @@ std::vector<VerificationCheck> run_verification(const io::PileWaveCase& c,
         if (name == "rigid_ram_decay") append(coupling::check_rigid_ram_decay(setup, result));
         else if (name == "elastic_ram_pulse") append(coupling::check_elastic_ram_pulse(setup, result));
         else if (name == "toe_reflection") append(coupling::check_toe_reflection(setup, result));
+        else if (name == "half_sine_transfer") append(coupling::check_half_sine_transfer(setup, result));
         else if (name == "energy_conservation") append(coupling::check_energy_conservation(setup, result));
         else if (name == "rod_axisymmetric_agreement") {
             // The twin: same case, rod model, same element size along the axis.

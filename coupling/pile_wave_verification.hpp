@@ -30,6 +30,9 @@ std::vector<VerificationCheck> check_elastic_ram_pulse(const PileWaveSetup& s, c
 std::vector<VerificationCheck> check_toe_reflection(const PileWaveSetup& s, const PileWaveResult& r);
 // Prescribed pulse, no damping: stored energy after the load equals its work (0.5 %).
 std::vector<VerificationCheck> check_energy_conservation(const PileWaveSetup& s, const PileWaveResult& r);
+// Half-sine pulse into a pile whose toe absorbs the wave (matched dashpot): the head force
+// peaks at F0 and the energy transferred is F0^2 t_i / (2 Z).
+std::vector<VerificationCheck> check_half_sine_transfer(const PileWaveSetup& s, const PileWaveResult& r);
 // Axisymmetric solid against rod: peak head force (3 %) and arrival times at the toe.
 std::vector<VerificationCheck> check_model_agreement(const PileWaveResult& solid,
                                                      const PileWaveResult& rod);

@@ -12,7 +12,8 @@ namespace {
 
 const std::vector<std::string> kChecks = {"rigid_ram_decay",  "elastic_ram_pulse",
                                           "toe_reflection",   "energy_conservation",
-                                          "rod_axisymmetric_agreement", "mesh_convergence"};
+                                          "rod_axisymmetric_agreement", "mesh_convergence",
+                                          "half_sine_transfer"};
 
 fem::LinearElasticSteel read_steel(MapReader m) {
     fem::LinearElasticSteel s;

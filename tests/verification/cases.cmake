@@ -1,0 +1,10 @@
+# Verification cases of the pile wave analysis (issue 2, checks 1-6).
+pilempm_case_test(verify_rigid_ram cases/verification/rigid-ram.yaml verification)
+pilempm_case_test(verify_elastic_ram cases/verification/elastic-ram.yaml verification)
+pilempm_case_test(verify_toe_reflection_free cases/verification/toe-reflection-free.yaml verification)
+pilempm_case_test(verify_toe_reflection_fixed cases/verification/toe-reflection-fixed.yaml verification)
+pilempm_case_test(verify_energy_conservation cases/verification/energy-conservation.yaml verification)
+pilempm_case_test(verify_axisymmetric_vs_rod cases/verification/axisymmetric-vs-rod.yaml verification)
+pilempm_case_test(verify_mesh_convergence cases/verification/mesh-convergence.yaml verification)
+# The default case runs in CI too, as a smoke test of every writer (VTK, HDF5, CSV, plots).
+pilempm_case_test(north_sea_monopile_rod cases/pile-wave/north-sea-monopile.yaml validation)
