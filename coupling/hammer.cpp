@@ -72,6 +72,8 @@ HammerChain::HammerChain(const RamCushionSpec& spec, double ram_element_size)
     v_.assign(m_.size(), 0.0);
     for (int i = 0; i < ram_nodes_; ++i) v_[i] = -spec.impact_velocity;
     f_.assign(m_.size(), 0.0);
+    v_previous_ = v_;
+    impact_energy_ = kinetic_energy();
 }
 
 double HammerChain::stable_time_step(double pile_head_mass) const {
@@ -111,7 +113,10 @@ void HammerChain::compute_forces(fem::ExplicitPile& pile) {
             continue;
         }
         const double c = compression(l, pile);
+        const double previous = l.force;
         l.force = l.kind == LinkKind::Rod ? l.stiffness * c : cushion_force(l, c);
+        l.absorbed += 0.5 * (previous + l.force) * (c - l.compression);  // trapezoidal work
+        l.compression = c;
         f_[l.upper] += l.force;  // compression pushes the upper body up...
         if (l.lower < 0) head_force_ += l.force;
         else f_[l.lower] -= l.force;  // ...and the lower body down
@@ -120,17 +125,21 @@ void HammerChain::compute_forces(fem::ExplicitPile& pile) {
 }
 
 void HammerChain::advance_velocity(double dt) {
+    v_previous_ = v_;
     for (std::size_t i = 0; i < m_.size(); ++i) v_[i] += dt * f_[i] / m_[i];
 }
 
 void HammerChain::resolve_contacts(double dt, fem::ExplicitPile& pile) {
+    auto lower_mass = [&](const Link& l) { return l.lower < 0 ? pile.head_mass() : m_[l.lower]; };
+    auto lower_velocity = [&](const Link& l) { return l.lower < 0 ? pile.head_velocity() : v_[l.lower]; };
+    std::vector<char> struck(links_.size(), 0);
     // Gauss-Seidel over the contact pairs: few pairs, converges in a few sweeps.
     for (int sweep = 0; sweep < 50; ++sweep) {
         bool changed = false;
-        for (auto& l : links_) {
+        for (std::size_t k = 0; k < links_.size(); ++k) {
+            Link& l = links_[k];
             if (l.kind != LinkKind::Contact) continue;
-            const double m_low = l.lower < 0 ? pile.head_mass() : m_[l.lower];
-            const double v_low = l.lower < 0 ? pile.head_velocity() : v_[l.lower];
+            const double m_low = lower_mass(l), v_low = lower_velocity(l);
             const double gap = -compression(l, pile);
             // Impulse that closes the gap exactly at t_{n+1}, if the pair would overlap.
             const double gap_next = gap + dt * (v_[l.upper] - v_low);
@@ -140,21 +149,48 @@ void HammerChain::resolve_contacts(double dt, fem::ExplicitPile& pile) {
             if (l.lower < 0) pile.add_head_velocity(-impulse / m_low);
             else v_[l.lower] -= impulse / m_low;
             l.force += impulse / dt;
+            struck[k] = 1;
             changed = true;
         }
         if (!changed) break;
     }
-    for (const auto& l : links_)
-        if (l.kind == LinkKind::Contact && l.lower < 0) head_force_ += l.force;
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+        Link& l = links_[k];
+        if (l.kind != LinkKind::Contact) continue;
+        const double approach = lower_velocity(l) - v_[l.upper];
+        // Held in contact the constraint does no work; what is lost is the closing speed the
+        // pair carried into the step: an inelastic impact, 1/2 mu (v_in^2 - v_out^2).
+        if (struck[k]) {
+            const double mu = 1.0 / (1.0 / m_[l.upper] + 1.0 / lower_mass(l));
+            const double in = std::max(0.0, l.approach), out = std::max(0.0, approach);
+            contact_loss_ += 0.5 * mu * (in * in - out * out);
+        }
+        l.approach = approach;
+        if (l.lower < 0) head_force_ += l.force;
+    }
 }
 
 void HammerChain::advance_displacement(double dt) {
-    for (std::size_t i = 0; i < m_.size(); ++i) u_[i] += dt * v_[i];
+    for (std::size_t i = 0; i < m_.size(); ++i) {
+        u_[i] += dt * v_[i];
+        gravity_work_ -= m_[i] * gravity_ * dt * v_[i];
+    }
 }
 
 double HammerChain::kinetic_energy() const {
     double e = 0.0;
-    for (std::size_t i = 0; i < m_.size(); ++i) e += 0.5 * m_[i] * v_[i] * v_[i];
+    for (std::size_t i = 0; i < m_.size(); ++i) {
+        const double v = 0.5 * (v_previous_[i] + v_[i]);
+        e += 0.5 * m_[i] * v * v;
+    }
+    return e;
+}
+
+double HammerChain::dissipated_energy() const {
+    double e = contact_loss_;
+    for (const auto& l : links_)
+        if (l.kind == LinkKind::Cushion)  // absorbed minus what unloading on k/e^2 would return
+            e += l.absorbed - 0.5 * l.force * l.force * l.restitution * l.restitution / l.stiffness;
     return e;
 }
 

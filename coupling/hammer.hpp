@@ -69,8 +69,15 @@ public:
     void advance_displacement(double dt);
 
     double force_on_head() const { return head_force_; }  // N, compression positive
-    double kinetic_energy() const;   // with the velocities at t_{n+1/2}
-    double stored_energy() const;    // springs and cushions, J
+    // At t_n, from the mean of the half-step velocities (as the pile's is reported).
+    double kinetic_energy() const;
+    double stored_energy() const;    // recoverable energy of springs and cushions, J
+    // Lost in cushion hysteresis and inelastic contact so far, J.
+    double dissipated_energy() const;
+    // Work gravity has done on ram and helmet so far, J.
+    double gravity_work() const { return gravity_work_; }
+    // Kinetic energy at impact, J.
+    double impact_energy() const { return impact_energy_; }
     double ram_velocity() const { return v_.front(); }   // up positive
     double ram_impedance() const { return ram_impedance_; }
     int ram_nodes() const { return ram_nodes_; }
@@ -84,16 +91,23 @@ private:
         double stiffness = 0.0, restitution = 1.0;
         double max_compression = 0.0;  // cushion loading history
         double force = 0.0;            // compression positive, at the last evaluation
+        double compression = 0.0;      // at the last evaluation
+        double absorbed = 0.0;         // work done on a cushion so far, J
+        double approach = 0.0;         // closing speed at the end of the last step, m/s
     };
     double compression(const Link& l, const fem::ExplicitPile& pile) const;
     double cushion_force(Link& l, double c) const;
 
     std::vector<double> m_, u_, v_, f_;
+    std::vector<double> v_previous_;  // v at t_{n-1/2}
     std::vector<Link> links_;
     int ram_nodes_ = 1;
     double gravity_ = 9.81;
     double head_force_ = 0.0;
     double ram_impedance_ = 0.0;
+    double contact_loss_ = 0.0;
+    double gravity_work_ = 0.0;
+    double impact_energy_ = 0.0;
 };
 
 }  // namespace pilempm::coupling

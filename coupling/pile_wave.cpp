@@ -92,7 +92,8 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
                         "displacement_down_m", "support_reaction_compression_N"});
     Table energy_t("energy", {"time_s", "pile_kinetic_J", "pile_strain_J", "hammer_kinetic_J",
                               "hammer_stored_J", "toe_dashpot_dissipated_J",
-                              "work_of_prescribed_force_J", "enthru_J"});
+                              "work_of_prescribed_force_J", "enthru_J", "hammer_dissipated_J",
+                              "gravity_work_on_hammer_J"});
     std::vector<Table> gauge_t;
     for (std::size_t g = 0; g < gauges.size(); ++g)
         gauge_t.emplace_back(gauge_table_name(setup.gauge_depths[g]),
@@ -159,7 +160,8 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
         }
         energy_t.add_row({t, pile.kinetic_energy(v_avg), pile.strain_energy(),
                           chain ? chain->kinetic_energy() : 0.0, chain ? chain->stored_energy() : 0.0,
-                          dissipated, work, enthru});
+                          dissipated, work, enthru, chain ? chain->dissipated_energy() : 0.0,
+                          chain ? chain->gravity_work() : 0.0});
 
         if (observer && snap > 0.0 && t >= next_snapshot - 1e-12) {
             observer->on_snapshot(t, pile, v_avg, stress);
@@ -176,8 +178,7 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
     s.enthru = enthru;
     s.max_enthru = max_enthru;
     if (chain) {
-        const auto& rc = setup.hammer.ram_cushion;
-        s.hammer_energy = 0.5 * rc.ram.mass * rc.impact_velocity * rc.impact_velocity;
+        s.hammer_energy = chain->impact_energy();
     }
     s.wave_speed = c;
     s.head_impedance = impedance;

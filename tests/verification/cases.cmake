@@ -8,3 +8,5 @@ pilempm_case_test(verify_axisymmetric_vs_rod cases/verification/axisymmetric-vs-
 pilempm_case_test(verify_mesh_convergence cases/verification/mesh-convergence.yaml verification)
 # The default case runs in CI too, as a smoke test of every writer (VTK, HDF5, CSV, plots).
 pilempm_case_test(north_sea_monopile_rod cases/pile-wave/north-sea-monopile.yaml validation)
+pilempm_case_test(north_sea_monopile_ram_cushion cases/pile-wave/north-sea-monopile-ram-cushion.yaml validation)
+pilempm_case_test(north_sea_monopile_axisymmetric cases/pile-wave/north-sea-monopile-axisymmetric.yaml validation)
