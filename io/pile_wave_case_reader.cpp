@@ -79,7 +79,9 @@ std::vector<std::pair<double, double>> read_force_file(const MapReader& m, const
     fs::path p(name);
     if (p.is_relative()) p = fs::path(m.file()).parent_path() / p;
     std::ifstream in(p);
-    if (!in) throw CaseError(m.file(), 0, m.path() + ".file", "a readable CSV file of time_s,force_N", p.string() + " missing");
+    if (!in)
+        throw CaseError(m.file(), m.line_of("file"), m.path() + ".file",
+                        "a readable CSV file of time_s,force_N", p.string() + " missing");
     std::vector<std::pair<double, double>> rows;
     std::string line;
     int lineno = 0;

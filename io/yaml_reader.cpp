@@ -31,13 +31,30 @@ std::string describe(const YAML::Node& n) {
     return "'" + n.Scalar() + "'";
 }
 
-MapReader::MapReader(YAML::Node node, std::string path, std::string file)
-    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)) {
+MapReader::MapReader(YAML::Node node, std::string path, std::string file, int key_line)
+    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)), key_line_(key_line) {
     if (!node_.IsMap())
         throw CaseError(file_, line(), path_, "a mapping of keys to values", describe(node_));
+    // YAML allows a key twice and keeps one silently; a case file must not.
+    std::vector<std::string> seen;
+    for (const auto& kv : node_) {
+        const std::string k = kv.first.Scalar();
+        if (std::find(seen.begin(), seen.end(), k) != seen.end())
+            throw CaseError(file_, kv.first.Mark().line + 1, key_path(k), "each key once",
+                            "'" + k + "' a second time");
+        seen.push_back(k);
+    }
 }
 
-int MapReader::line() const { return node_.Mark().line + 1; }
+int MapReader::line() const {
+    if (key_line_ > 0) return key_line_;
+    return node_.Mark().line < 0 ? 0 : node_.Mark().line + 1;
+}
+
+int MapReader::value_line(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsDefined() || n.IsNull()) return line_of(key);
+    return n.Mark().line + 1;
+}
 
 int MapReader::line_of(const std::string& key) const {
     for (const auto& kv : node_)
@@ -71,7 +88,8 @@ YAML::Node MapReader::get(const std::string& key, const std::string& expected) {
 
 YAML::Node MapReader::raw(const std::string& key) { return get(key, "a value"); }
 
-double MapReader::to_number(const YAML::Node& n, const std::string& key, const Expect& e) const {
+double MapReader::to_number(const YAML::Node& n, const std::string& path, int line,
+                            const Expect& e) const {
     double x = 0.0;
     bool ok = n.IsScalar();
     if (ok) {
@@ -81,14 +99,14 @@ double MapReader::to_number(const YAML::Node& n, const std::string& key, const E
             ok = false;
         }
     }
-    if (!ok || !std::isfinite(x))
-        throw CaseError(file_, n.Mark().line + 1, key, e.words, describe(n));
-    if (!e.accepts(x)) throw CaseError(file_, n.Mark().line + 1, key, e.words, n.Scalar());
+    if (!ok || !std::isfinite(x)) throw CaseError(file_, line, path, e.words, describe(n));
+    if (!e.accepts(x)) throw CaseError(file_, line, path, e.words, n.Scalar());
     return x;
 }
 
 double MapReader::number(const std::string& key, const Expect& e) {
-    return to_number(get(key, e.words), key_path(key), e);
+    const YAML::Node n = get(key, e.words);
+    return to_number(n, key_path(key), value_line(n, key), e);
 }
 
 double MapReader::number_or(const std::string& key, double fallback, const Expect& e) {
@@ -103,9 +121,9 @@ int MapReader::integer_or(const std::string& key, int fallback, int min_value) {
     try {
         x = n.as<int>();
     } catch (const YAML::Exception&) {
-        throw CaseError(file_, n.Mark().line + 1, key_path(key), words, describe(n));
+        throw CaseError(file_, value_line(n, key), key_path(key), words, describe(n));
     }
-    if (x < min_value) throw CaseError(file_, n.Mark().line + 1, key_path(key), words, n.Scalar());
+    if (x < min_value) throw CaseError(file_, value_line(n, key), key_path(key), words, n.Scalar());
     return x;
 }
 
@@ -115,14 +133,14 @@ bool MapReader::boolean_or(const std::string& key, bool fallback) {
     try {
         return n.as<bool>();
     } catch (const YAML::Exception&) {
-        throw CaseError(file_, n.Mark().line + 1, key_path(key), "true or false", describe(n));
+        throw CaseError(file_, value_line(n, key), key_path(key), "true or false", describe(n));
     }
 }
 
 std::string MapReader::text_or(const std::string& key, const std::string& fallback) {
     if (!has(key)) return fallback;
     const YAML::Node n = get(key, "text");
-    if (!n.IsScalar()) throw CaseError(file_, n.Mark().line + 1, key_path(key), "text", describe(n));
+    if (!n.IsScalar()) throw CaseError(file_, value_line(n, key), key_path(key), "text", describe(n));
     return n.Scalar();
 }
 
@@ -135,7 +153,7 @@ static std::string one_of(const std::vector<std::string>& options) {
 std::string MapReader::choice(const std::string& key, const std::vector<std::string>& options) {
     const YAML::Node n = get(key, one_of(options));
     if (!n.IsScalar() || std::find(options.begin(), options.end(), n.Scalar()) == options.end())
-        throw CaseError(file_, n.Mark().line + 1, key_path(key), one_of(options), describe(n));
+        throw CaseError(file_, value_line(n, key), key_path(key), one_of(options), describe(n));
     return n.Scalar();
 }
 
@@ -147,10 +165,11 @@ std::string MapReader::choice_or(const std::string& key, const std::string& fall
 std::vector<double> MapReader::numbers(const std::string& key, const Expect& e) {
     const YAML::Node n = get(key, "a list of numbers");
     if (!n.IsSequence())
-        throw CaseError(file_, n.Mark().line + 1, key_path(key), "a list of " + e.words, describe(n));
+        throw CaseError(file_, value_line(n, key), key_path(key), "a list of " + e.words, describe(n));
     std::vector<double> out;
     for (std::size_t i = 0; i < n.size(); ++i)
-        out.push_back(to_number(n[i], key_path(key) + "[" + std::to_string(i) + "]", e));
+        out.push_back(to_number(n[i], key_path(key) + "[" + std::to_string(i) + "]",
+                                value_line(n[i], key), e));
     return out;
 }
 
@@ -158,13 +177,13 @@ std::vector<std::string> MapReader::words(const std::string& key,
                                           const std::vector<std::string>& options) {
     const YAML::Node n = get(key, "a list of names");
     if (!n.IsSequence())
-        throw CaseError(file_, n.Mark().line + 1, key_path(key), "a list of " + one_of(options),
+        throw CaseError(file_, value_line(n, key), key_path(key), "a list of " + one_of(options),
                         describe(n));
     std::vector<std::string> out;
     for (std::size_t i = 0; i < n.size(); ++i) {
         if (!n[i].IsScalar() ||
             std::find(options.begin(), options.end(), n[i].Scalar()) == options.end())
-            throw CaseError(file_, n[i].Mark().line + 1, key_path(key) + "[" + std::to_string(i) + "]",
+            throw CaseError(file_, value_line(n[i], key), key_path(key) + "[" + std::to_string(i) + "]",
                             one_of(options), describe(n[i]));
         out.push_back(n[i].Scalar());
     }
@@ -174,7 +193,7 @@ std::vector<std::string> MapReader::words(const std::string& key,
 MapReader MapReader::map(const std::string& key) {
     const YAML::Node n = get(key, "a mapping");
     if (!n.IsMap()) throw CaseError(file_, line_of(key), key_path(key), "a mapping", describe(n));
-    return MapReader(n, key_path(key), file_);
+    return MapReader(n, key_path(key), file_, line_of(key));
 }
 
 std::optional<MapReader> MapReader::optional_map(const std::string& key) {
@@ -188,7 +207,7 @@ std::vector<MapReader> MapReader::maps(const std::string& key) {
         throw CaseError(file_, line_of(key), key_path(key), "a non-empty list of mappings", describe(n));
     std::vector<MapReader> out;
     for (std::size_t i = 0; i < n.size(); ++i)
-        out.emplace_back(n[i], key_path(key) + "[" + std::to_string(i) + "]", file_);
+        out.emplace_back(n[i], key_path(key) + "[" + std::to_string(i) + "]", file_, value_line(n[i], key));
     return out;
 }
 

@@ -24,7 +24,8 @@ Expect in_half_open_range(double lo, double hi, const std::string& what);  // (l
 
 class MapReader {
 public:
-    MapReader(YAML::Node node, std::string path, std::string file);
+    // key_line: the line of the key that introduced this mapping (0 for the document).
+    MapReader(YAML::Node node, std::string path, std::string file, int key_line = 0);
 
     int line() const;  // 1-based line of this mapping
     int line_of(const std::string& key) const;
@@ -54,11 +55,15 @@ public:
 private:
     YAML::Node get(const std::string& key, const std::string& expected);
     std::string key_path(const std::string& key) const;
-    double to_number(const YAML::Node& n, const std::string& key, const Expect& e) const;
+    double to_number(const YAML::Node& n, const std::string& path, int line, const Expect& e) const;
+    // Line to report for a value: its own, or its key's when the value is empty (yaml-cpp
+    // places an empty value at whatever follows it in the file).
+    int value_line(const YAML::Node& n, const std::string& key) const;
 
     YAML::Node node_;
     std::string path_, file_;
     std::vector<std::string> read_;
+    int key_line_ = 0;
 };
 
 // Loads a YAML file whose top level is a mapping; syntax errors become CaseError.
