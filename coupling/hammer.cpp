@@ -30,7 +30,7 @@ double PrescribedForce::end_time() const {
     return table_time.empty() ? duration : table_time.back();
 }
 
-HammerChain::HammerChain(const RamCushionSpec& spec, double ram_element_size)
+HammerChain::HammerChain(const RamCushionSpec& spec, double ram_element_size, double head_displacement)
     : gravity_(spec.gravity) {
     const auto& ram = spec.ram;
     if (ram.elastic) {
@@ -67,7 +67,7 @@ HammerChain::HammerChain(const RamCushionSpec& spec, double ram_element_size)
     } else if (spec.pile_cushion) {
         throw std::invalid_argument("a pile cushion needs a helmet mass above it");
     }
-    u_.assign(m_.size(), 0.0);
+    u_.assign(m_.size(), head_displacement);
     // Ram moves down at impact velocity; the helmet rests on the pile.
     v_.assign(m_.size(), 0.0);
     for (int i = 0; i < ram_nodes_; ++i) v_[i] = -spec.impact_velocity;
@@ -76,16 +76,21 @@ HammerChain::HammerChain(const RamCushionSpec& spec, double ram_element_size)
     impact_energy_ = kinetic_energy();
 }
 
-double HammerChain::stable_time_step(double pile_head_mass) const {
-    double w_max = 0.0;
+double HammerChain::stable_time_step(double pile_head_mass, double pile_max_frequency) const {
+    // lambda_i = sum over the springs at node i of 2 k / m_i bounds w^2 of the chain.
+    std::vector<double> lambda(m_.size(), 0.0);
+    double head = 0.0;
     for (const auto& l : links_) {
         if (l.kind == LinkKind::Contact) continue;
         const double k = l.kind == LinkKind::Cushion ? l.stiffness / (l.restitution * l.restitution)
                                                      : l.stiffness;
-        const double m_low = l.lower < 0 ? pile_head_mass : m_[l.lower];
-        w_max = std::max(w_max, std::sqrt(k * (1.0 / m_[l.upper] + 1.0 / m_low)));
+        lambda[l.upper] += 2.0 * k / m_[l.upper];
+        if (l.lower < 0) head += 2.0 * k / pile_head_mass;
+        else lambda[l.lower] += 2.0 * k / m_[l.lower];
     }
-    return w_max > 0.0 ? 2.0 / w_max : 1e300;
+    double w2 = pile_max_frequency * pile_max_frequency + head;
+    for (double x : lambda) w2 = std::max(w2, x);
+    return 2.0 / std::sqrt(w2);
 }
 
 double HammerChain::compression(const Link& l, const fem::ExplicitPile& pile) const {

@@ -58,9 +58,12 @@ struct HammerSpec {
 // A ram-cushion-helmet chain acting on the head of an ExplicitPile.
 class HammerChain {
 public:
-    HammerChain(const RamCushionSpec& spec, double ram_element_size);
+    // head_displacement: where the pile head is (m, up positive) when the ram strikes.
+    HammerChain(const RamCushionSpec& spec, double ram_element_size, double head_displacement = 0.0);
 
-    double stable_time_step(double pile_head_mass) const;
+    // Gershgorin bound over the chain's nodes and the pile head, whose own highest
+    // frequency is pile_max_frequency (rad/s).
+    double stable_time_step(double pile_head_mass, double pile_max_frequency) const;
     // Forces at t_n from the current positions; adds the head force to the pile.
     void compute_forces(fem::ExplicitPile& pile);
     void advance_velocity(double dt);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "coupling/blow_stepper.hpp"
 #include "coupling/section_gauge.hpp"
 
 namespace pilempm::coupling {
@@ -18,18 +19,7 @@ const Table& PileWaveResult::table(const std::string& name) const {
 }
 
 double pile_wave_stable_time_step(const fem::ExplicitPile& pile, const PileWaveSetup& setup) {
-    double dt = pile.stable_time_step();
-    if (setup.hammer.kind == HammerKind::RamCushion) {
-        const HammerChain chain(setup.hammer.ram_cushion, setup.ram_element_size);
-        dt = std::min(dt, chain.stable_time_step(pile.head_mass()));
-        // A rod ram has its own element wave-speed limit: L_e / c_ram.
-        const auto& ram = setup.hammer.ram_cushion.ram;
-        if (ram.elastic) {
-            const int n = chain.ram_nodes() - 1;
-            dt = std::min(dt, ram.length / n / std::sqrt(ram.youngs_modulus / ram.density));
-        }
-    }
-    return dt;
+    return blow_stable_time_step(pile, setup.hammer, setup.ram_element_size);
 }
 
 namespace {
@@ -67,9 +57,8 @@ Table stress_envelope(const fem::PileMesh& mesh, double length, const std::vecto
 PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* observer) {
     fem::ExplicitPile pile(setup.mesh, setup.steel, setup.toe);
     const auto& mesh = pile.mesh();
-    std::optional<HammerChain> chain;
-    const bool prescribed = setup.hammer.kind == HammerKind::PrescribedForce;
-    if (!prescribed) chain.emplace(setup.hammer.ram_cushion, setup.ram_element_size);
+    BlowStepper stepper(pile, setup.hammer, setup.ram_element_size);
+    const HammerChain* chain = stepper.chain();
 
     const double stable = pile_wave_stable_time_step(pile, setup);
     const double dt = setup.time_step > 0.0 ? setup.time_step : setup.time_step_factor * stable;
@@ -102,7 +91,7 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
 
     const int ne = mesh.num_elements();
     std::vector<double> stress(ne), smin(ne, 0.0), smax(ne, 0.0);
-    std::vector<double> v_prev, v_avg(mesh.num_dofs());
+    const std::vector<double>& v_avg = stepper.velocity_at_step();
     double enthru = 0.0, max_enthru = 0.0, work = 0.0, dissipated = 0.0, peak_head = 0.0;
     double prev_power = 0.0, prev_work_power = 0.0, prev_diss = 0.0;
     const double snap = setup.snapshot_interval;
@@ -111,25 +100,10 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
 
     for (long n = 0; n <= steps; ++n) {
         const double t = n * dt;
-        pile.compute_internal_force();
-        pile.clear_external_force();
-        double applied = 0.0;
-        if (prescribed) {
-            applied = setup.hammer.force.at(t);
-            pile.add_head_force(-applied);
-        } else {
-            chain->compute_forces(pile);
-        }
-        v_prev = pile.velocity();
-        pile.advance_velocity(dt);
-        if (chain) {
-            chain->advance_velocity(dt);
-            chain->resolve_contacts(dt, pile);
-        }
+        stepper.kick(t, dt);
+        const double applied = stepper.applied_force();
         // Record the state at t_n: stress from u_n, velocity as the mean of the half steps.
         pile.axial_stress(stress);
-        const auto& v_next = pile.velocity();
-        for (std::size_t i = 0; i < v_avg.size(); ++i) v_avg[i] = 0.5 * (v_prev[i] + v_next[i]);
         for (int e = 0; e < ne; ++e) {
             smin[e] = std::min(smin[e], stress[e]);
             smax[e] = std::max(smax[e], stress[e]);
@@ -169,8 +143,7 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
         }
         if (observer && (n % progress_every == 0 || n == steps)) observer->on_progress(t, setup.duration, n);
 
-        pile.advance_displacement(dt);
-        if (chain) chain->advance_displacement(dt);
+        stepper.drift(dt);
     }
 
     auto& s = result.summary;
@@ -209,7 +182,7 @@ PileWaveResult run_pile_wave(const PileWaveSetup& setup, PileWaveObserver* obser
     result.tables.push_back(std::move(energy_t));
     for (auto& g : gauge_t) result.tables.push_back(std::move(g));
     result.final_displacement = pile.displacement();
-    result.final_velocity = v_avg;
+    result.final_velocity = std::vector<double>(v_avg.begin(), v_avg.end());
     result.final_axial_stress = stress;
     return result;
 }

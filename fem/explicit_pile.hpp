@@ -2,6 +2,7 @@
 // Explicit central-difference dynamics of the FE pile (lumped mass, linear elastic).
 // The head section moves as a rigid plate (the helmet enforces it), so the hammer sees
 // one axial DOF; the toe is free, fixed, or on a dashpot.
+#include <algorithm>
 #include <vector>
 
 #include "fem/pile_mesh.hpp"
@@ -37,6 +38,9 @@ public:
     double head_displacement() const { return u_[mesh_.axial_dof(mesh_.head_nodes.front())]; }
     void add_head_force(double force_up);
     void add_head_velocity(double dv_up);
+    // Generic nodal loads and dashpots for whatever acts on the pile (soil springs).
+    void add_nodal_force(int dof, double force) { f_ext_[dof] += force; }
+    void add_nodal_damping(int dof, double c) { damping_[dof] += c; }
 
     // Toe reaction (force of the support on the pile, up positive) of the last step.
     double toe_reaction() const { return toe_reaction_; }
@@ -52,6 +56,8 @@ public:
     double strain_energy() const;  // 0.5 u.K u, with f_int of the current u
     double kinetic_energy(const std::vector<double>& v) const;
     double dashpot_power(const std::vector<double>& v) const;  // W, rate of dissipation
+    // Brings the pile to rest: zeroes every velocity (kinetic damping between blows).
+    void stop() { std::fill(v_.begin(), v_.end(), 0.0); }
 
 private:
     PileMesh mesh_;

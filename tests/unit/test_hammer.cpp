@@ -51,7 +51,7 @@ double rebound_ratio(double restitution) {
     spec.hammer_cushion = coupling::CushionSpec{1e8, restitution};
     spec.gravity = 0.0;
     coupling::HammerChain chain(spec, 0.1);
-    const double dt = 0.5 * std::min(pile.stable_time_step(), chain.stable_time_step(pile.head_mass()));
+    const double dt = 0.5 * chain.stable_time_step(pile.head_mass(), pile.operators().max_frequency);
     int n = 0;
     while (chain.ram_velocity() < 0.0 && ++n < 200000) step(pile, chain, dt);
     // Let the cushion finish unloading.

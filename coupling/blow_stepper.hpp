@@ -1,0 +1,45 @@
+#pragma once
+// The central-difference step of one hammer blow, shared by the pile wave analysis and
+// the drivability study: pile, hammer and (optionally) Smith soil. kick() takes the forces
+// at t_n and gives v_{n+1/2}; the state at t_n may be read before drift() moves u on.
+#include <optional>
+#include <vector>
+
+#include "coupling/hammer.hpp"
+#include "coupling/smith_soil.hpp"
+#include "fem/explicit_pile.hpp"
+
+namespace pilempm::coupling {
+
+// Stable step of pile, hammer and soil together (before any safety factor).
+double blow_stable_time_step(const fem::ExplicitPile& pile, const HammerSpec& hammer,
+                             double ram_element_size, const SmithSoil* soil = nullptr);
+
+class BlowStepper {
+public:
+    // The pile is the caller's and keeps its state between blows; the hammer starts at
+    // impact on the pile head where it now is.
+    BlowStepper(fem::ExplicitPile& pile, const HammerSpec& hammer, double ram_element_size,
+                SmithSoil* soil = nullptr);
+
+    double stable_time_step() const;
+    void kick(double t, double dt);
+    void drift(double dt);
+
+    // State at t_n, valid between kick() and drift().
+    const std::vector<double>& velocity_at_step() const { return v_mid_; }
+    double applied_force() const { return applied_; }  // prescribed hammer force, compression
+    const HammerChain* chain() const { return chain_ ? &*chain_ : nullptr; }
+    fem::ExplicitPile& pile() { return pile_; }
+
+private:
+    fem::ExplicitPile& pile_;
+    const HammerSpec& hammer_;
+    std::optional<HammerChain> chain_;
+    SmithSoil* soil_;
+    double ram_element_size_;
+    std::vector<double> v_old_, v_mid_;
+    double applied_ = 0.0;
+};
+
+}  // namespace pilempm::coupling
