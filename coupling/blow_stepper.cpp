@@ -40,9 +40,11 @@ void BlowStepper::kick(double t, double dt) {
     }
     if (soil_) soil_->add_forces(pile_);
     v_old_ = pile_.velocity();
-    pile_.advance_velocity(dt);
+    const double dt_kick = restart_ ? 0.5 * dt : dt;
+    restart_ = false;
+    pile_.advance_velocity(dt_kick);
     if (chain_) {
-        chain_->advance_velocity(dt);
+        chain_->advance_velocity(dt_kick);
         chain_->resolve_contacts(dt, pile_);
     }
     const auto& v_new = pile_.velocity();
@@ -52,6 +54,21 @@ void BlowStepper::kick(double t, double dt) {
 void BlowStepper::drift(double dt) {
     pile_.advance_displacement(dt);
     if (chain_) chain_->advance_displacement(dt);
+}
+
+}  // namespace pilempm::coupling
+
+namespace pilempm::coupling {
+
+double BlowStepper::kinetic_energy() const {
+    return pile_.kinetic_energy(v_mid_) + (chain_ ? chain_->kinetic_energy() : 0.0);
+}
+
+void BlowStepper::stop() {
+    pile_.stop();
+    std::fill(v_mid_.begin(), v_mid_.end(), 0.0);
+    if (chain_) chain_->stop();
+    restart_ = true;
 }
 
 }  // namespace pilempm::coupling

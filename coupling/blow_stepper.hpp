@@ -31,6 +31,11 @@ public:
     double applied_force() const { return applied_; }  // prescribed hammer force, compression
     const HammerChain* chain() const { return chain_ ? &*chain_ : nullptr; }
     fem::ExplicitPile& pile() { return pile_; }
+    // Kinetic energy of pile and hammer at t_n; stop() zeroes all velocities.
+    // After stop() the next kick is a half step, as at the start of a leapfrog: a full
+    // kick from rest is explicit gradient descent, unstable above dt = sqrt(2) / w_max.
+    double kinetic_energy() const;
+    void stop();
 
 private:
     fem::ExplicitPile& pile_;
@@ -40,6 +45,7 @@ private:
     double ram_element_size_;
     std::vector<double> v_old_, v_mid_;
     double applied_ = 0.0;
+    bool restart_ = false;
 };
 
 }  // namespace pilempm::coupling

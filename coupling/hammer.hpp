@@ -3,6 +3,7 @@
 // helmet chain. The chain is a handful of axial DOFs (ram nodes, helmet) joined by rod
 // springs, cushions (compression-only, coefficient of restitution) or direct contact
 // (kinematic, compression-only), integrated with the pile's central-difference step.
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -82,6 +83,10 @@ public:
     // Kinetic energy at impact, J.
     double impact_energy() const { return impact_energy_; }
     double ram_velocity() const { return v_.front(); }   // up positive
+    void stop() {  // kinetic damping between blows
+        std::fill(v_.begin(), v_.end(), 0.0);
+        std::fill(v_previous_.begin(), v_previous_.end(), 0.0);
+    }
     double ram_impedance() const { return ram_impedance_; }
     int ram_nodes() const { return ram_nodes_; }
     const std::vector<double>& velocity() const { return v_; }

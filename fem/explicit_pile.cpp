@@ -6,7 +6,7 @@
 namespace pilempm::fem {
 
 ExplicitPile::ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSupport toe)
-    : mesh_(std::move(mesh)), toe_(toe) {
+    : mesh_(std::move(mesh)), steel_(steel), toe_(toe) {
     ops_ = assemble_pile_operators(mesh_, steel);
     const int n = mesh_.num_dofs();
     u_.assign(n, 0.0);

@@ -22,6 +22,7 @@ public:
     ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSupport toe);
 
     const PileMesh& mesh() const { return mesh_; }
+    const LinearElasticSteel& steel() const { return steel_; }
     const PileOperators& operators() const { return ops_; }
     double stable_time_step() const { return ops_.stable_time_step; }
 
@@ -61,6 +62,7 @@ public:
 
 private:
     PileMesh mesh_;
+    LinearElasticSteel steel_;
     PileOperators ops_;
     ToeSupport toe_;
     std::vector<double> u_, v_, f_int_, f_ext_;
