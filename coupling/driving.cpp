@@ -45,7 +45,8 @@ SmithSoil make_smith_soil(const fem::ExplicitPile& pile, const ResistanceDistrib
         const double hi = i + 1 == nn ? L : 0.5 * (z + mesh.z(i + 1));
         if (lo >= pen) break;
         const double r_u = r.shaft_between(pen - hi, pen - lo);  // depth = pen - z
-        if (r_u > 0.0) soil.add_point(i, r_u, p.shaft_quake, dashpot(r_u, p.shaft_damping), false);
+        const double j = r.shaft_damping_at(std::max(0.0, pen - z), p.shaft_damping);
+        if (r_u > 0.0) soil.add_point(i, r_u, p.shaft_quake, dashpot(r_u, j), false);
     }
     if (r.toe > 0.0) soil.add_point(0, r.toe, p.toe_quake, dashpot(r.toe, p.toe_damping), true);
     return soil;

@@ -14,6 +14,13 @@ double ResistanceDistribution::shaft_per_metre_at(double d) const {
     return (1.0 - w) * shaft[i - 1] + w * shaft[i];
 }
 
+double ResistanceDistribution::shaft_damping_at(double d, double fallback) const {
+    if (shaft_damping.size() != depth.size() || depth.empty()) return fallback;
+    const auto it = std::lower_bound(depth.begin(), depth.end(), d);
+    const std::size_t i = it == depth.end() ? depth.size() - 1 : static_cast<std::size_t>(it - depth.begin());
+    return shaft_damping[i];
+}
+
 double ResistanceDistribution::shaft_between(double d0, double d1) const {
     if (depth.size() < 2 || d1 <= d0) return 0.0;
     d0 = std::max(d0, depth.front());
