@@ -6,12 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "app/drivability_job.hpp"
 #include "app/pile_wave_job.hpp"
+#include "io/drivability_case.hpp"
 #include "io/case_error.hpp"
 
 namespace {
 
 constexpr const char* kUsage = R"(pilempm - pile driving simulator (pile wave analysis, drivability, MPM-FEM)
+
+The case file's `analysis:` key selects what runs: pile_wave (one blow travelling down
+the pile) or drivability (SRD and blow count against depth).
 
 Usage:
   pilempm run CASE.yaml [--out DIR] [--quiet]   run a case; results go to DIR
@@ -58,8 +63,12 @@ int main(int argc, char** argv) {
     if (command == "check" && !out_dir.empty()) return usage_error("check writes nothing; --out is not used");
     if (out_dir.empty()) out_dir = (std::filesystem::path("results") / std::filesystem::path(case_file).stem()).string();
     try {
-        if (command == "check") return pilempm::app::check_pile_wave_case(case_file);
-        return pilempm::app::run_pile_wave_case(case_file, out_dir, quiet);
+        const bool drivability = pilempm::io::read_analysis_kind(case_file) == "drivability";
+        if (command == "check")
+            return drivability ? pilempm::app::check_drivability_case(case_file)
+                               : pilempm::app::check_pile_wave_case(case_file);
+        return drivability ? pilempm::app::run_drivability_case(case_file, out_dir, quiet)
+                           : pilempm::app::run_pile_wave_case(case_file, out_dir, quiet);
     } catch (const pilempm::io::CaseError& e) {
         std::fprintf(stderr, "pilempm: bad input: %s\n", e.what());
         return 2;

@@ -10,6 +10,8 @@ class TerminalProgress {
 public:
     TerminalProgress(std::string stage, bool enabled);
     void update(double time, double duration, long step);
+    // For work counted in items (depth points, blows): "what: done of total".
+    void update_count(long done, long total, const char* what);
     void done();
 
 private:

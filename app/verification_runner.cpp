@@ -54,7 +54,7 @@ std::vector<VerificationCheck> run_verification(const io::PileWaveCase& c,
     return all;
 }
 
-io::JsonObject verification_json(const io::PileWaveCase& c, const std::vector<VerificationCheck>& checks,
+io::JsonObject verification_json(const io::CaseFile& c, const std::vector<VerificationCheck>& checks,
                                  const io::JsonObject& details) {
     std::vector<io::JsonObject> list;
     bool all_passed = !checks.empty();
@@ -62,7 +62,10 @@ io::JsonObject verification_json(const io::PileWaveCase& c, const std::vector<Ve
         io::JsonObject o;
         o.add("name", k.name).add("computed", k.computed).add("reference", k.reference)
             .add("tolerance", k.tolerance)
-            .add("tolerance_kind", std::string(k.at_least ? "at_least" : k.relative ? "relative" : "absolute"))
+            .add("tolerance_kind", std::string(k.at_least        ? "at_least"
+                                              : k.within_factor ? "factor"
+                                              : k.relative      ? "relative"
+                                                                : "absolute"))
             .add("passed", k.passed).add("note", k.note);
         list.push_back(std::move(o));
         all_passed = all_passed && k.passed;

@@ -14,7 +14,7 @@ std::vector<coupling::VerificationCheck> run_verification(const io::PileWaveCase
                                                           const coupling::PileWaveResult& result,
                                                           io::JsonObject& details, bool quiet);
 
-io::JsonObject verification_json(const io::PileWaveCase& c,
+io::JsonObject verification_json(const io::CaseFile& c,
                                  const std::vector<coupling::VerificationCheck>& checks,
                                  const io::JsonObject& details);
 

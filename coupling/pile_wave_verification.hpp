@@ -15,6 +15,7 @@ struct VerificationCheck {
     double tolerance = 0.0;
     bool relative = true;      // |c - r| <= tol |r|, else |c - r| <= tol
     bool at_least = false;     // passes when computed >= reference (a coverage check)
+    bool within_factor = false;  // passes when reference / tol <= computed <= reference x tol
     bool passed = false;
     std::string note;
 };

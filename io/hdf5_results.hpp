@@ -17,7 +17,8 @@ namespace pilempm::io {
 //  /mesh              "coordinates" (N x dim), "block_<k>" connectivity (elements x nodes, int)
 //                     with string attribute "kind" = element_kind_name(kind), "head_nodes",
 //                     "toe_nodes"; attribute "dim";
-//  /final_state       "displacement", "velocity" (N x dim), "axial_stress_Pa" (one per element);
+//  /final_state       "displacement", "velocity" (N x dim), "axial_stress_Pa" (one per element),
+//                     left out when all three are empty (a study of many blows);
 //  root attributes    numeric from `attributes`, strings from `text_attributes`.
 // '/' in table or column names becomes '_' (HDF5 path separator); '.' is kept.
 // Throws std::runtime_error naming the file on any failure, and removes the partial file.
