@@ -48,6 +48,12 @@ std::vector<VerificationCheck> run_checks(const io::DrivabilityCase& c, const co
             const auto p = coupling::drive_at_penetration(s.mesh, s.steel, srd, s.smith, s.hammer,
                                                           s.ram_element_size, s.driving);
             append(coupling::check_danish_formula(s, p));
+        } else if (name == "self_weight_penetration") {
+            for (const auto& run : r.runs)
+                if (run.soil_case == ref.name && run.energy_level == r.runs.front().energy_level)
+                    all.push_back(coupling::make_check(
+                        "self_weight_penetration_m", run.self_weight_penetration, c.observed_self_weight_penetration,
+                        c.observed_tolerance, false, "submerged pile weight against the " + ref.name + " SRD, observed depth"));
         }
     }
     return all;

@@ -26,6 +26,8 @@ struct DrivabilityCase : CaseFile, PileInput, HammerInput {
     bool plots = true;
     std::vector<std::string> verification_checks;
     double verification_depth = 0.0;  // m; 0: final depth
+    double observed_self_weight_penetration = -1.0;  // m, for the validation check
+    double observed_tolerance = 0.5;                 // m
 };
 
 DrivabilityCase read_drivability_case(const std::string& file);

@@ -13,7 +13,8 @@ namespace {
 
 const std::vector<std::string> kAnalyses = {"pile_wave", "drivability"};
 const std::vector<std::string> kChecks = {"static_push", "bearing_graph_monotonic",
-                                          "blow_energy_balance", "danish_formula"};
+                                          "blow_energy_balance", "danish_formula",
+                                          "self_weight_penetration"};
 
 coupling::SrdMethod method_from(const std::string& name) {
     if (name == "alm_hamre_2001") return coupling::SrdMethod::AlmHamre2001;
@@ -199,6 +200,12 @@ DrivabilityCase read_drivability_case(const std::string& file) {
     if (auto v = root.optional_map("verification")) {
         c.verification_checks = v->words("checks", kChecks);
         c.verification_depth = v->number_or("depth", 0.0, non_negative("depth in m"));
+        c.observed_self_weight_penetration =
+            v->number_or("observed_self_weight_penetration", -1.0, non_negative("depth in m"));
+        c.observed_tolerance = v->number_or("observed_tolerance", 0.5, positive("depth tolerance in m"));
+        if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "self_weight_penetration") !=
+                c.verification_checks.end() && c.observed_self_weight_penetration < 0.0)
+            v->fail("observed_self_weight_penetration", "the observed depth for the self_weight_penetration check");
         v->finish();
     }
     root.finish();

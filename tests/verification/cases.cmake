@@ -10,3 +10,6 @@ pilempm_case_test(verify_mesh_convergence cases/verification/mesh-convergence.ya
 pilempm_case_test(north_sea_monopile_rod cases/pile-wave/north-sea-monopile.yaml validation)
 pilempm_case_test(north_sea_monopile_ram_cushion cases/pile-wave/north-sea-monopile-ram-cushion.yaml validation)
 pilempm_case_test(north_sea_monopile_axisymmetric cases/pile-wave/north-sea-monopile-axisymmetric.yaml validation)
+# Wave-equation drivability (issue 3, checks 1-4) and the seed 001 study.
+pilempm_case_test(verify_drivability_checks cases/verification/drivability-checks.yaml verification)
+pilempm_case_test(north_sea_monopile_drivability cases/drivability/north-sea-monopile.yaml validation)
