@@ -13,3 +13,4 @@ pilempm_case_test(north_sea_monopile_axisymmetric cases/pile-wave/north-sea-mono
 # Wave-equation drivability (issue 3, checks 1-4) and the seed 001 study.
 pilempm_case_test(verify_drivability_checks cases/verification/drivability-checks.yaml verification)
 pilempm_case_test(north_sea_monopile_drivability cases/drivability/north-sea-monopile.yaml validation)
+pilempm_case_test(example_cpt_sand_over_clay cases/drivability/cpt-sand-over-clay.yaml validation)
