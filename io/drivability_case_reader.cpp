@@ -6,6 +6,7 @@
 
 #include "fem/rod_mesh.hpp"
 #include "io/drivability_case.hpp"
+#include "io/numeric_file.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace pilempm::io {
@@ -52,39 +53,6 @@ coupling::SoilLayer read_layer(MapReader m, double expected_top) {
     return l;
 }
 
-coupling::CptRecord read_cpt_file(const MapReader& m, const std::string& name, std::string& path_out) {
-    namespace fs = std::filesystem;
-    fs::path p(name);
-    if (p.is_relative()) p = fs::path(m.file()).parent_path() / p;
-    path_out = p.string();
-    std::ifstream in(p);
-    if (!in)
-        throw CaseError(m.file(), m.line_of("cpt_file"), m.path() + ".cpt_file",
-                        "a readable CSV file of depth_m,qt_Pa,fs_Pa", p.string() + " missing");
-    coupling::CptRecord cpt;
-    std::string line;
-    int lineno = 0;
-    while (std::getline(in, line)) {
-        ++lineno;
-        if (line.empty() || line[0] == '#') continue;
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream s(line);
-        double z, qt, fs;
-        if (!(s >> z >> qt >> fs)) {
-            if (cpt.depth.empty() && lineno == 1) continue;  // header
-            throw CaseError(p.string(), lineno, "depth_m,qt_Pa,fs_Pa", "three numbers per row", "'" + line + "'");
-        }
-        if (!cpt.depth.empty() && !(z > cpt.depth.back()))
-            throw CaseError(p.string(), lineno, "depth_m", "depths that increase row by row", std::to_string(z));
-        cpt.depth.push_back(z);
-        cpt.qt.push_back(qt);
-        cpt.fs.push_back(fs);
-    }
-    if (cpt.depth.size() < 2)
-        throw CaseError(p.string(), lineno, "depth_m,qt_Pa,fs_Pa", "at least two rows", std::to_string(cpt.depth.size()));
-    return cpt;
-}
-
 void read_soil(MapReader m, DrivabilityCase& c) {
     c.soil.water_depth = m.number_or("water_depth", 0.0, non_negative("water depth in m"));
     double top = 0.0;
@@ -92,7 +60,11 @@ void read_soil(MapReader m, DrivabilityCase& c) {
         c.soil.layers.push_back(read_layer(l, top));
         top = c.soil.layers.back().bottom;
     }
-    if (m.has("cpt_file")) c.soil.cpt = read_cpt_file(m, m.text_or("cpt_file", ""), c.cpt_file);
+    if (m.has("cpt_file")) {
+        const NumericFile f = read_numeric_file(m, "cpt_file", {"depth_m", "qt_Pa", "fs_Pa"});
+        c.cpt_file = f.path;
+        c.soil.cpt = {f.columns[0], f.columns[1], f.columns[2]};
+    }
     c.soil.clay_cone_factor = m.number_or("clay_cone_factor", 15.0, positive("cone factor N_kt"));
     m.finish();
 }
@@ -163,10 +135,7 @@ std::string read_analysis_kind(const std::string& file) {
 DrivabilityCase read_drivability_case(const std::string& file) {
     MapReader root = load_yaml_file(file);
     DrivabilityCase c;
-    c.file = file;
-    c.title = root.text_or("title", std::filesystem::path(file).stem().string());
-    root.choice("analysis", {"drivability"});
-    c.gravity = root.number_or("gravity", 9.81, non_negative("gravitational acceleration in m/s^2"));
+    read_case_header(root, c, file, "drivability");
     {
         MapReader pile = root.map("pile");
         if (pile.has("model") && pile.choice("model", {"rod", "axisymmetric"}) != "rod")

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/numeric_file.hpp"
 #include "io/pile_hammer_input.hpp"
 
 namespace pilempm::io {
@@ -72,32 +73,6 @@ coupling::CushionSpec read_cushion(MapReader m) {
     return c;
 }
 
-std::vector<std::pair<double, double>> read_force_file(const MapReader& m, const std::string& name) {
-    namespace fs = std::filesystem;
-    fs::path p(name);
-    if (p.is_relative()) p = fs::path(m.file()).parent_path() / p;
-    std::ifstream in(p);
-    if (!in)
-        throw CaseError(m.file(), m.line_of("file"), m.path() + ".file",
-                        "a readable CSV file of time_s,force_N", p.string() + " missing");
-    std::vector<std::pair<double, double>> rows;
-    std::string line;
-    int lineno = 0;
-    while (std::getline(in, line)) {
-        ++lineno;
-        if (line.empty() || line[0] == '#') continue;
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream s(line);
-        double t, f;
-        if (!(s >> t >> f)) {
-            if (rows.empty() && lineno == 1) continue;  // a header row
-            throw CaseError(p.string(), lineno, "time_s,force_N", "two numbers per row", "'" + line + "'");
-        }
-        rows.emplace_back(t, f);
-    }
-    return rows;
-}
-
 void read_hammer(MapReader m, HammerInput& c, const CaseFile& file) {
     const std::string type = m.choice("type", {"half_sine", "force_table", "ram_cushion"});
     auto& h = c.hammer;
@@ -123,32 +98,36 @@ void read_hammer(MapReader m, HammerInput& c, const CaseFile& file) {
         }
     } else if (type == "force_table") {
         h.kind = coupling::HammerKind::PrescribedForce;
-        std::vector<std::pair<double, double>> rows;
+        std::vector<double> times, forces;
         if (m.has("file")) {
-            rows = read_force_file(m, m.text_or("file", ""));
+            const NumericFile f = read_numeric_file(m, "file", {"time_s", "force_N"});
+            times = f.columns[0];
+            forces = f.columns[1];
         } else {
             const YAML::Node t = m.raw("table");
             if (!t.IsSequence()) m.fail("table", "a list of [time_s, force_N] pairs", describe(t));
             for (std::size_t i = 0; i < t.size(); ++i) {
+                const std::string where = m.path() + ".table[" + std::to_string(i) + "]";
                 if (!t[i].IsSequence() || t[i].size() != 2)
-                    throw CaseError(file.file, t[i].Mark().line + 1, m.path() + ".table[" + std::to_string(i) + "]",
-                                    "a [time_s, force_N] pair", describe(t[i]));
+                    throw CaseError(file.file, t[i].Mark().line + 1, where, "a [time_s, force_N] pair", describe(t[i]));
+                double time = 0.0, force = 0.0;
                 try {
-                    rows.emplace_back(t[i][0].as<double>(), t[i][1].as<double>());
+                    time = t[i][0].as<double>();
+                    force = t[i][1].as<double>();
                 } catch (const YAML::Exception&) {
-                    throw CaseError(file.file, t[i].Mark().line + 1, m.path() + ".table[" + std::to_string(i) + "]",
-                                    "two numbers", describe(t[i][0]) + ", " + describe(t[i][1]));
+                    throw CaseError(file.file, t[i].Mark().line + 1, where, "two numbers",
+                                    describe(t[i][0]) + ", " + describe(t[i][1]));
                 }
+                if (!times.empty() && !(time > times.back()))
+                    throw CaseError(file.file, t[i].Mark().line + 1, where, "times that increase row by row",
+                                    "t = " + std::to_string(time) + " s");
+                times.push_back(time);
+                forces.push_back(force);
             }
+            if (times.size() < 2) m.fail("table", "at least two (time, force) rows", std::to_string(times.size()) + " rows");
         }
-        if (rows.size() < 2) m.fail(m.has("file") ? "file" : "table", "at least two (time, force) rows", std::to_string(rows.size()) + " rows");
-        for (std::size_t i = 0; i < rows.size(); ++i) {
-            if (i > 0 && !(rows[i].first > rows[i - 1].first))
-                m.fail(m.has("file") ? "file" : "table", "times that increase row by row",
-                       "row " + std::to_string(i + 1) + " at t = " + std::to_string(rows[i].first) + " s");
-            h.force.table_time.push_back(rows[i].first);
-            h.force.table_force.push_back(rows[i].second);
-        }
+        h.force.table_time = times;
+        h.force.table_force = forces;
         c.hammer_description = "force table";
     } else {
         h.kind = coupling::HammerKind::RamCushion;
@@ -187,6 +166,13 @@ void read_hammer(MapReader m, HammerInput& c, const CaseFile& file) {
 }
 
 }  // namespace
+
+void read_case_header(MapReader& root, CaseFile& c, const std::string& file, const std::string& analysis) {
+    c.file = file;
+    c.title = root.text_or("title", std::filesystem::path(file).stem().string());
+    root.choice("analysis", {analysis});
+    c.gravity = root.number_or("gravity", 9.81, non_negative("gravitational acceleration in m/s^2"));
+}
 
 const char* pile_model_name(PileModel m) { return m == PileModel::Rod ? "rod" : "axisymmetric"; }
 

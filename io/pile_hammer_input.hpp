@@ -45,6 +45,9 @@ struct HammerInput {
     double hammer_mass = 0.0;    // kg resting on the pile (ram + helmet) when known
 };
 
+// title, analysis (must be `analysis`) and gravity of the top level.
+void read_case_header(MapReader& root, CaseFile& c, const std::string& file, const std::string& analysis);
+
 // `pile:`; with_toe: the toe condition is asked for (pile wave analysis), else the soil
 // supports the toe and a `toe` key is an error.
 void read_pile_section(MapReader m, PileInput& pile, CaseFile& c, bool with_toe);

@@ -20,10 +20,7 @@ const std::vector<std::string> kChecks = {"rigid_ram_decay",  "elastic_ram_pulse
 PileWaveCase read_pile_wave_case(const std::string& file) {
     MapReader root = load_yaml_file(file);
     PileWaveCase c;
-    c.file = file;
-    c.title = root.text_or("title", std::filesystem::path(file).stem().string());
-    root.choice("analysis", {"pile_wave"});
-    c.gravity = root.number_or("gravity", 9.81, non_negative("gravitational acceleration in m/s^2"));
+    read_case_header(root, c, file, "pile_wave");
     read_pile_section(root.map("pile"), c, c, true);
     read_hammer_section(root.map("hammer"), c, c);
 

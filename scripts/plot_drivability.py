@@ -21,30 +21,13 @@ import math
 import os
 import sys
 
-# Debian's matplotlib lives with /usr/bin/python3; a pyenv/venv `python3` first on PATH may
-# lack it. Retry once with the system interpreter before giving up.
-_REEXEC_GUARD = "PILEMPM_PLOT_REEXEC"
-_SYSTEM_PYTHON = "/usr/bin/python3"
+from plot_common import require_matplotlib  # noqa: E402
 
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import matplotlib.transforms as mtransforms
-    from matplotlib.lines import Line2D
-    from matplotlib.ticker import MaxNLocator
-    import numpy as np
-except ImportError:
-    if (
-        not os.environ.get(_REEXEC_GUARD)
-        and os.path.exists(_SYSTEM_PYTHON)
-        and os.path.realpath(sys.executable) != os.path.realpath(_SYSTEM_PYTHON)
-    ):
-        os.environ[_REEXEC_GUARD] = "1"
-        os.execv(_SYSTEM_PYTHON, [_SYSTEM_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
-    print("plot_drivability.py: matplotlib not available, no plots written", file=sys.stderr)
-    sys.exit(3)
+plt = require_matplotlib(__file__)
+import matplotlib.transforms as mtransforms  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
+import numpy as np  # noqa: E402
 
 PROG = "plot_drivability.py"
 

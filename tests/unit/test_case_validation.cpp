@@ -455,15 +455,17 @@ TEST_F(CaseValidation, ForceTableTimesNotIncreasing) {
                                   "hammer:\n  type: force_table\n  table:\n    - [0.0, 0.0]\n"
                                   "    - [0.001, 1.0e6]\n    - [0.001, 0.0]\n");
     const auto f = write("table.yaml", text);
-    EXPECT_TRUE(names_all(case_error(f), f, line_of(text, "table:"), "hammer.table",
-                          "times that increase row by row", "row 3"));
+    // The error points at the offending row itself.
+    EXPECT_TRUE(names_all(case_error(f), f, line_of(text, "    - [0.001, 0.0]"), "hammer.table[2]",
+                          "times that increase row by row", "t = 0.001000 s"));
 
     // the same from a CSV file next to the case
     write("force.csv", "time_s,force_N\n0.0,0.0\n0.002,1.0e6\n0.001,0.0\n");
     const std::string csv = with(kBase, kHalfSineHammer, "hammer:\n  type: force_table\n  file: force.csv\n");
     const auto g = write("table-file.yaml", csv);
-    EXPECT_TRUE(names_all(case_error(g), g, line_of(csv, "file:"), "hammer.file",
-                          "times that increase row by row", "row 3"));
+    // ...or, in a CSV file, at that file's row.
+    EXPECT_TRUE(names_all(case_error(g), dir_ / "force.csv", 4, "time_s", "values that increase row by row",
+                          "0.001000"));
 
     // control: increasing times are accepted
     const auto ok = write("table-ok.yaml", with(text, "    - [0.001, 0.0]\n", "    - [0.002, 0.0]\n"));
