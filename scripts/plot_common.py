@@ -4,6 +4,7 @@ Debian's matplotlib lives with /usr/bin/python3; a pyenv/venv `python3` first on
 lack it, so the calling script is re-run once with the system interpreter before giving up
 (exit status 3: no plots written).
 """
+import csv
 import os
 import sys
 
@@ -30,3 +31,28 @@ def require_matplotlib(script):
             os.execv(_SYSTEM_PYTHON, [_SYSTEM_PYTHON, os.path.abspath(script)] + sys.argv[1:])
         print(f"{os.path.basename(script)}: matplotlib not available, no plots written", file=sys.stderr)
         sys.exit(3)
+
+
+class InputError(Exception):
+    """Missing or malformed input: the script reports it and exits 2."""
+
+
+def read_columns(path, names):
+    """The named columns of a CSV file as lists of floats ("nan"/"inf" are numbers too)."""
+    if not os.path.exists(path):
+        raise InputError(f"{path}: not found")
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        missing = [n for n in names if n not in (reader.fieldnames or [])]
+        if missing:
+            raise InputError(f"{path}: missing column(s) {', '.join(missing)}")
+        cols = {n: [] for n in names}
+        for line, row in enumerate(reader, start=2):
+            try:
+                for n in names:
+                    cols[n].append(float(row[n]))
+            except (TypeError, ValueError):
+                raise InputError(f"{path}:{line}: not a number in {row}")
+    if not cols[names[0]]:
+        raise InputError(f"{path}: no data rows")
+    return cols

@@ -15,13 +15,13 @@ observed points and bearing_graph_file) and the CSV files it names.
 
 Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
 """
-import csv
 import json
 import math
 import os
 import sys
 
-from plot_common import require_matplotlib  # noqa: E402
+import plot_common  # noqa: E402
+from plot_common import InputError, require_matplotlib  # noqa: E402
 
 plt = require_matplotlib(__file__)
 import matplotlib.transforms as mtransforms  # noqa: E402
@@ -41,30 +41,11 @@ BEARING_COLUMNS = ["energy_level", "ultimate_resistance_N", "blows_per_0.25m",
 BLOW_AXIS_FACTOR = 1.2
 
 
-class InputError(Exception):
-    pass
 
 
 def read_columns(path, names):
-    """The named columns of a CSV file as numpy float arrays (non-numbers are an error;
-    "nan"/"inf" are accepted and simply not drawn)."""
-    if not os.path.exists(path):
-        raise InputError(f"{path}: not found")
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        missing = [n for n in names if n not in (reader.fieldnames or [])]
-        if missing:
-            raise InputError(f"{path}: missing column(s) {', '.join(missing)}")
-        cols = {n: [] for n in names}
-        for line, row in enumerate(reader, start=2):
-            try:
-                for n in names:
-                    cols[n].append(float(row[n]))
-            except (TypeError, ValueError):
-                raise InputError(f"{path}:{line}: not a number in {row}")
-    if not cols[names[0]]:
-        raise InputError(f"{path}: no data rows")
-    return {n: np.asarray(v, dtype=float) for n, v in cols.items()}
+    """The named columns of a CSV file as numpy float arrays (nan/inf are simply not drawn)."""
+    return {n: np.asarray(v, dtype=float) for n, v in plot_common.read_columns(path, names).items()}
 
 
 def number(obj, key, where, default=None, allow_none=False):

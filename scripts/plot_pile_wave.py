@@ -7,38 +7,14 @@ stress_envelope.png max compression and tension stress against depth below the h
 
 Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
 """
-import csv
 import json
 import math
 import os
 import sys
 
-from plot_common import require_matplotlib  # noqa: E402
+from plot_common import InputError, read_columns, require_matplotlib  # noqa: E402
 
 plt = require_matplotlib(__file__)
-
-
-class InputError(Exception):
-    pass
-
-
-def read_columns(path, names):
-    """The named columns of a CSV file as lists of floats."""
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        missing = [n for n in names if n not in (reader.fieldnames or [])]
-        if missing:
-            raise InputError(f"{path}: missing column(s) {', '.join(missing)}")
-        cols = {n: [] for n in names}
-        for line, row in enumerate(reader, start=2):
-            try:
-                for n in names:
-                    cols[n].append(float(row[n]))
-            except (TypeError, ValueError):
-                raise InputError(f"{path}:{line}: not a number in {row}")
-    if not cols[names[0]]:
-        raise InputError(f"{path}: no data rows")
-    return cols
 
 
 def read_title(out_dir):
