@@ -1,0 +1,29 @@
+#include "mpm/grid.hpp"
+
+#include <algorithm>
+
+namespace pilempm::mpm {
+
+template <int D>
+void Grid<D>::allocate() {
+    const std::size_t n = num_nodes();
+    mass.assign(n, 0.0);
+    momentum.assign(D * n, 0.0);
+    force.assign(D * n, 0.0);
+    velocity.assign(D * n, 0.0);
+    acceleration.assign(D * n, 0.0);
+    fixed.assign(D * n, 0);
+    dashpot.assign(D * n, 0.0);
+}
+
+template <int D>
+void Grid<D>::reset() {
+    std::fill(mass.begin(), mass.end(), 0.0);
+    std::fill(momentum.begin(), momentum.end(), 0.0);
+    std::fill(force.begin(), force.end(), 0.0);
+}
+
+template struct Grid<2>;
+template struct Grid<3>;
+
+}  // namespace pilempm::mpm
