@@ -1,0 +1,336 @@
+#include "mpm/mpm_solver.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace pilempm::mpm {
+
+template <int D>
+MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
+    if (m_.axisymmetric && D != 2) throw std::invalid_argument("axisymmetry needs D = 2");
+    if (m_.grid.mass.empty()) m_.grid.allocate();
+    points_of_material_.assign(m_.materials.size(), {});
+    for (std::size_t p = 0; p < m_.particles.size(); ++p) {
+        const int mat = m_.particles.material[p];
+        if (mat < 0 || mat >= static_cast<int>(m_.materials.size()))
+            throw std::invalid_argument("material point with an unknown material");
+        points_of_material_[mat].push_back(static_cast<int>(p));
+    }
+    stencil_.resize(m_.particles.size());
+}
+
+template <int D>
+double MpmSolver<D>::stable_time_step() const {
+    const auto& p = m_.particles;
+    double h = m_.grid.spacing[0];
+    for (int d = 1; d < D; ++d) h = std::min(h, m_.grid.spacing[d]);
+    double c_max = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double rho = p.mass[i] / p.volume[i];
+        double speed = 0.0;
+        for (int d = 0; d < D; ++d) speed += p.v[D * i + d] * p.v[D * i + d];
+        c_max = std::max(c_max, std::sqrt(m_.materials[p.material[i]]->p_wave_modulus() / rho) + std::sqrt(speed));
+    }
+    return c_max > 0.0 ? m_.cfl * h / c_max : 1e300;
+}
+
+template <int D>
+void MpmSolver<D>::compute_stencils() {
+    auto& p = m_.particles;
+    const long n = static_cast<long>(p.size());
+    int outside = 0;
+#pragma omp parallel for schedule(static) reduction(+ : outside)
+    for (long i = 0; i < n; ++i) {
+        if (!m_.grid.inside(&p.x[D * i])) {  // no throwing inside a parallel region
+            ++outside;
+            continue;
+        }
+        // Half-edge vectors of the domain: undeformed for uGIMP, F-deformed for CPDI.
+        double half[D * D];
+        for (int k = 0; k < D; ++k)
+            for (int d = 0; d < D; ++d) {
+                double v = 0.0;
+                if (m_.shape == ShapeKind::CPDI) {
+                    for (int e = 0; e < D; ++e) v += p.F[D * D * i + D * d + e] * p.domain0[D * D * i + D * k + e];
+                } else {
+                    v = p.domain0[D * D * i + D * k + d];
+                }
+                half[D * k + d] = 0.5 * v;
+            }
+        evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &p.x[D * i], half, stencil_[i]);
+    }
+    if (outside > 0) throw std::runtime_error(std::to_string(outside) + " material point(s) left the grid");
+}
+
+// Each thread accumulates into its own copy of `fields` values per node; then they are
+// summed: scatter without atomics, deterministic for a fixed thread count.
+template <int D>
+template <class Accumulate>
+void MpmSolver<D>::scatter(int fields, Accumulate&& accumulate, std::vector<double>& out) {
+    const std::size_t size = static_cast<std::size_t>(fields) * m_.grid.num_nodes();
+    const int threads = omp_get_max_threads();
+    thread_buffer_.resize(threads);
+    const long n = static_cast<long>(m_.particles.size());
+#pragma omp parallel
+    {
+        auto& buf = thread_buffer_[omp_get_thread_num()];
+        buf.assign(size, 0.0);
+#pragma omp for schedule(static)
+        for (long i = 0; i < n; ++i) accumulate(i, buf.data());
+    }
+    out.assign(size, 0.0);
+    for (int t = 0; t < threads; ++t) {
+        const auto& buf = thread_buffer_[t];
+        if (buf.size() != size) continue;
+        for (std::size_t k = 0; k < size; ++k) out[k] += buf[k];
+    }
+}
+
+template <int D>
+void MpmSolver<D>::particles_to_grid() {
+    auto& p = m_.particles;
+    auto& g = m_.grid;
+    constexpr int F = 1 + 3 * D;  // mass, momentum, total force, external force
+    scatter(F, [&](long i, double* buf) {
+        const Stencil<D>& s = stencil_[i];
+        const double mass = p.mass[i], vol = p.volume[i];
+        const double* v = &p.v[D * i];
+        const double* sg = &p.stress[6 * i];
+        // Stress rows in D dimensions: [xx xy xz; xy yy yz; xz yz zz].
+        double S[D][D];
+        S[0][0] = sg[0];
+        S[1][1] = sg[1];
+        S[0][1] = S[1][0] = sg[3];
+        if constexpr (D == 3) {
+            S[2][2] = sg[2];
+            S[1][2] = S[2][1] = sg[4];
+            S[0][2] = S[2][0] = sg[5];
+        }
+        for (int k = 0; k < s.count; ++k) {
+            double* b = buf + F * s.node[k];
+            const double N = s.N[k];
+            b[0] += N * mass;
+            for (int d = 0; d < D; ++d) {
+                b[1 + d] += N * mass * v[d];
+                const double external = N * (mass * m_.gravity[d] + p.external_force[D * i + d]);
+                double f = external;
+                for (int e = 0; e < D; ++e) f -= vol * S[d][e] * s.dN[k][e];
+                b[1 + D + d] += f;
+                b[1 + 2 * D + d] += external;
+            }
+            if (m_.axisymmetric) b[1 + D] -= vol * sg[2] * s.hoop[k];  // hoop stress on f_r
+        }
+    }, scratch_);
+    const int nn = g.num_nodes();
+    for (int n = 0; n < nn; ++n) {
+        g.mass[n] = scratch_[F * n];
+        for (int d = 0; d < D; ++d) {
+            g.momentum[D * n + d] = scratch_[F * n + 1 + d];
+            g.force[D * n + d] = scratch_[F * n + 1 + D + d];
+        }
+    }
+    external_.resize(D * nn);
+    for (int n = 0; n < nn; ++n)
+        for (int d = 0; d < D; ++d) external_[D * n + d] = scratch_[F * n + 1 + 2 * D + d];
+}
+
+template <int D>
+void MpmSolver<D>::update_grid(double dt) {
+    auto& g = m_.grid;
+    const int nn = g.num_nodes();
+    const double tiny = 1e-12 * (total_mass() / std::max(1, nn));
+    double unbalanced = 0.0, applied = 0.0;
+    for (int n = 0; n < nn; ++n) {
+        const double mass = g.mass[n];
+        for (int d = 0; d < D; ++d) {
+            const int k = D * n + d;
+            if (mass <= tiny) {
+                g.velocity[k] = g.acceleration[k] = 0.0;
+                continue;
+            }
+            const double v0 = g.momentum[k] / mass;
+            double f = g.force[k];
+            if (!g.fixed[k]) {
+                unbalanced += f * f;
+                applied += external_[k] * external_[k];
+            }
+            // Cundall's local damping: a force against the motion, in proportion to the
+            // unbalanced force, so equilibrium is reached without a global viscosity.
+            if (m_.local_damping > 0.0 && v0 != 0.0) f -= m_.local_damping * std::abs(f) * (v0 > 0.0 ? 1.0 : -1.0);
+            // Absorbing dashpot taken at mid-step: stable for any impedance.
+            const double c = g.dashpot[k];
+            double v1 = ((mass / dt - 0.5 * c) * v0 + f) / (mass / dt + 0.5 * c);
+            if (g.fixed[k]) v1 = 0.0;
+            if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
+            g.velocity[k] = v1;
+            g.acceleration[k] = (v1 - v0) / dt;
+        }
+    }
+    unbalanced_ratio_ = applied > 0.0 ? std::sqrt(unbalanced / applied) : 0.0;
+}
+
+template <int D>
+void MpmSolver<D>::grid_to_particles(double dt) {
+    auto& p = m_.particles;
+    const auto& g = m_.grid;
+    const long n = static_cast<long>(p.size());
+    const double flip = m_.flip;
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+        const Stencil<D>& s = stencil_[i];
+        double a[D] = {}, vg[D] = {};
+        for (int k = 0; k < s.count; ++k)
+            for (int d = 0; d < D; ++d) {
+                a[d] += s.N[k] * g.acceleration[D * s.node[k] + d];
+                vg[d] += s.N[k] * g.velocity[D * s.node[k] + d];
+            }
+        for (int d = 0; d < D; ++d) {
+            double& v = p.v[D * i + d];
+            v = flip * (v + a[d] * dt) + (1.0 - flip) * vg[d];
+            p.x[D * i + d] += vg[d] * dt;
+        }
+    }
+}
+
+template <int D>
+void MpmSolver<D>::map_momentum_back() {
+    auto& p = m_.particles;
+    auto& g = m_.grid;
+    scatter(D, [&](long i, double* buf) {
+        const Stencil<D>& s = stencil_[i];
+        for (int k = 0; k < s.count; ++k)
+            for (int d = 0; d < D; ++d) buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * p.v[D * i + d];
+    }, scratch_);
+    const int nn = g.num_nodes();
+    const double tiny = 1e-12 * (total_mass() / std::max(1, nn));
+    for (int n = 0; n < nn; ++n)
+        for (int d = 0; d < D; ++d) {
+            const int k = D * n + d;
+            g.velocity[k] = (g.mass[n] > tiny && !g.fixed[k]) ? scratch_[k] / g.mass[n] : 0.0;
+        }
+}
+
+template <int D>
+void MpmSolver<D>::update_stress(double dt) {
+    auto& p = m_.particles;
+    const auto& g = m_.grid;
+    const long n = static_cast<long>(p.size());
+    int inverted = 0;
+#pragma omp parallel for schedule(static) reduction(+ : inverted)
+    for (long i = 0; i < n; ++i) {
+        const Stencil<D>& s = stencil_[i];
+        double L[D][D] = {}, hoop = 0.0;
+        for (int k = 0; k < s.count; ++k) {
+            const double* v = &g.velocity[D * s.node[k]];
+            for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) L[a][b] += v[a] * s.dN[k][b];
+            if (m_.axisymmetric) hoop += v[0] * s.hoop[k];
+        }
+        double* de = &p.dstrain[6 * i];
+        de[0] = L[0][0] * dt;
+        de[1] = L[1][1] * dt;
+        de[3] = (L[0][1] + L[1][0]) * dt;
+        if constexpr (D == 3) {
+            de[2] = L[2][2] * dt;
+            de[4] = (L[1][2] + L[2][1]) * dt;
+            de[5] = (L[2][0] + L[0][2]) * dt;
+        } else {
+            de[2] = m_.axisymmetric ? hoop * dt : 0.0;
+            de[4] = de[5] = 0.0;
+        }
+        // Jaumann rotation of the stress by the spin W = (L - L^T)/2 dt: s += W s - s W.
+        double* sg = &p.stress[6 * i];
+        double S[3][3] = {{sg[0], sg[3], sg[5]}, {sg[3], sg[1], sg[4]}, {sg[5], sg[4], sg[2]}};
+        double W[3][3] = {};
+        for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b) W[a][b] = 0.5 * (L[a][b] - L[b][a]) * dt;
+        double R[3][3];
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) {
+                R[a][b] = 0.0;
+                for (int c = 0; c < 3; ++c) R[a][b] += W[a][c] * S[c][b] - S[a][c] * W[c][b];
+            }
+        sg[0] += R[0][0];
+        sg[1] += R[1][1];
+        sg[2] += R[2][2];
+        sg[3] += R[0][1];
+        sg[4] += R[1][2];
+        sg[5] += R[0][2];
+        // Deformation gradient, volume and the accumulated strain.
+        double Fn[D * D];
+        for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b) {
+                double v = p.F[D * D * i + D * a + b];
+                for (int c = 0; c < D; ++c) v += L[a][c] * dt * p.F[D * D * i + D * c + b];
+                Fn[D * a + b] = v;
+            }
+        for (int k = 0; k < D * D; ++k) p.F[D * D * i + k] = Fn[k];
+        double J = D == 2 ? Fn[0] * Fn[3] - Fn[1] * Fn[2]
+                          : Fn[0] * (Fn[4] * Fn[8] - Fn[5] * Fn[7]) - Fn[1] * (Fn[3] * Fn[8] - Fn[5] * Fn[6]) +
+                                Fn[2] * (Fn[3] * Fn[7] - Fn[4] * Fn[6]);
+        if (!(J > 0.0)) ++inverted;
+        // Volume per radian in axisymmetry grows with the hoop stretch too.
+        if (m_.axisymmetric) p.volume[i] *= 1.0 + de[0] + de[1] + de[2];
+        else p.volume[i] = p.volume0[i] * J;
+        for (int k = 0; k < 6; ++k) p.strain[6 * i + k] += de[k];
+    }
+    if (inverted > 0) throw std::runtime_error(std::to_string(inverted) + " material point(s) turned inside out (J <= 0)");
+    for (std::size_t mat = 0; mat < m_.materials.size(); ++mat) {
+        const auto& pts = points_of_material_[mat];
+        const int count = static_cast<int>(pts.size());
+        const int threads = omp_get_max_threads();
+#pragma omp parallel for schedule(static)
+        for (int t = 0; t < threads; ++t) {
+            const int lo = count * t / threads, hi = count * (t + 1) / threads;
+            if (hi > lo)
+                m_.materials[mat]->update(hi - lo, pts.data() + lo, p.dstrain.data(), p.stress.data(), p.state.data(),
+                                          p.state_stride);
+        }
+    }
+}
+
+template <int D>
+void MpmSolver<D>::step(double dt) {
+    compute_stencils();
+    particles_to_grid();
+    update_grid(dt);
+    grid_to_particles(dt);
+    map_momentum_back();
+    update_stress(dt);
+    time_ += dt;
+    ++steps_;
+}
+
+template <int D>
+double MpmSolver<D>::kinetic_energy() const {
+    const auto& p = m_.particles;
+    double e = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (int d = 0; d < D; ++d) e += 0.5 * p.mass[i] * p.v[D * i + d] * p.v[D * i + d];
+    return e;
+}
+
+template <int D>
+std::array<double, D> MpmSolver<D>::momentum() const {
+    std::array<double, D> q{};
+    const auto& p = m_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (int d = 0; d < D; ++d) q[d] += p.mass[i] * p.v[D * i + d];
+    return q;
+}
+
+template <int D>
+double MpmSolver<D>::total_mass() const {
+    double m = 0.0;
+    for (double x : m_.particles.mass) m += x;
+    return m;
+}
+
+template class MpmSolver<2>;
+template class MpmSolver<3>;
+
+}  // namespace pilempm::mpm

@@ -1,0 +1,74 @@
+#pragma once
+// Explicit MPM (MUSL with a FLIP/PIC blend) for a single-phase (dry or drained) soil in
+// plane strain, axisymmetry or 3D. One step: shape functions at the points, particles to
+// grid (mass, momentum, forces), grid update with boundary conditions, grid to particles,
+// the momentum mapped back (MUSL), the velocity gradient, the Jaumann-rotated stress update
+// by each material's model in one batch.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "mpm/constitutive_model.hpp"
+#include "mpm/grid.hpp"
+#include "mpm/particles.hpp"
+#include "mpm/shape_functions.hpp"
+
+namespace pilempm::mpm {
+
+template <int D>
+struct MpmModel {
+    Grid<D> grid;
+    Particles<D> particles;
+    std::vector<std::unique_ptr<ConstitutiveModel>> materials;
+    ShapeKind shape = ShapeKind::GIMP;
+    bool axisymmetric = false;          // D = 2 only: x = r
+    std::array<double, D> gravity{};    // m/s^2
+    double flip = 0.98;                 // FLIP fraction of the particle velocity update
+    double cfl = 0.5;                   // of the P-wave crossing time of a cell
+    double local_damping = 0.0;         // Cundall's alpha (quasi-static stages)
+};
+
+template <int D>
+class MpmSolver {
+public:
+    explicit MpmSolver(MpmModel<D>& model);
+    double stable_time_step() const;
+    void step(double dt);
+
+    double time() const { return time_; }
+    long steps() const { return steps_; }
+    double kinetic_energy() const;
+    std::array<double, D> momentum() const;
+    double total_mass() const;
+    // ||unbalanced force|| / ||external force|| over the grid nodes of the last step.
+    double unbalanced_force_ratio() const { return unbalanced_ratio_; }
+    // Work done on the grid by the absorbing dashpots so far (energy leaving), J.
+    double absorbed_energy() const { return absorbed_; }
+    void set_time(double t, long steps) {
+        time_ = t;
+        steps_ = steps;
+    }
+
+private:
+    void compute_stencils();
+    void particles_to_grid();
+    void update_grid(double dt);
+    void grid_to_particles(double dt);
+    void map_momentum_back();
+    void update_stress(double dt);
+    template <class Accumulate>
+    void scatter(int fields, Accumulate&& accumulate, std::vector<double>& out);
+
+    MpmModel<D>& m_;
+    std::vector<Stencil<D>> stencil_;
+    std::vector<std::vector<int>> points_of_material_;
+    std::vector<std::vector<double>> thread_buffer_;
+    std::vector<double> scratch_;
+    std::vector<double> external_;  // D per node: gravity and tractions, for the equilibrium measure
+    double time_ = 0.0;
+    long steps_ = 0;
+    double unbalanced_ratio_ = 0.0;
+    double absorbed_ = 0.0;
+};
+
+}  // namespace pilempm::mpm
