@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/drivability_job.hpp"
+#include "app/mpm_job.hpp"
 #include "app/pile_wave_job.hpp"
 #include "io/drivability_case.hpp"
 #include "io/case_error.hpp"
@@ -16,11 +17,14 @@ namespace {
 constexpr const char* kUsage = R"(pilempm - pile driving simulator (pile wave analysis, drivability, MPM-FEM)
 
 The case file's `analysis:` key selects what runs: pile_wave (one blow travelling down
-the pile) or drivability (SRD and blow count against depth).
+the pile), drivability (SRD and blow count against depth) or mpm (the MPM soil).
 
 Usage:
-  pilempm run CASE.yaml [--out DIR] [--quiet]   run a case; results go to DIR
-                                                (default: results/<case name>)
+  pilempm run CASE.yaml [--out DIR] [--quiet] [--resume]
+                                                run a case; results go to DIR
+                                                (default: results/<case name>); --resume
+                                                continues an interrupted MPM run from the
+                                                checkpoint it left in DIR.incomplete
   pilempm check CASE.yaml                       validate a case and print what would run
   pilempm --help | --version
 
@@ -49,9 +53,10 @@ int main(int argc, char** argv) {
     const std::string command = args[0];
     if (command != "run" && command != "check") return usage_error("unknown command '" + command + "'");
     std::string case_file, out_dir;
-    bool quiet = false;
+    bool quiet = false, resume = false;
     for (std::size_t i = 1; i < args.size(); ++i) {
         if (args[i] == "--quiet" || args[i] == "-q") quiet = true;
+        else if (args[i] == "--resume") resume = true;
         else if (args[i] == "--out" || args[i] == "-o") {
             if (i + 1 >= args.size()) return usage_error("--out needs a directory");
             out_dir = args[++i];
@@ -63,7 +68,12 @@ int main(int argc, char** argv) {
     if (command == "check" && !out_dir.empty()) return usage_error("check writes nothing; --out is not used");
     if (out_dir.empty()) out_dir = (std::filesystem::path("results") / std::filesystem::path(case_file).stem()).string();
     try {
-        const bool drivability = pilempm::io::read_analysis_kind(case_file) == "drivability";
+        const std::string kind = pilempm::io::read_analysis_kind(case_file);
+        if (kind == "mpm")
+            return command == "check" ? pilempm::app::check_mpm_case(case_file)
+                                      : pilempm::app::run_mpm_case(case_file, out_dir, quiet, resume);
+        if (resume) return usage_error("--resume applies to MPM runs, which write checkpoints");
+        const bool drivability = kind == "drivability";
         if (command == "check")
             return drivability ? pilempm::app::check_drivability_case(case_file)
                                : pilempm::app::check_pile_wave_case(case_file);

@@ -7,8 +7,14 @@ namespace pilempm::io {
 
 class StagedDirectory {
 public:
-    explicit StagedDirectory(std::filesystem::path final_dir);
-    ~StagedDirectory();  // removes the staging folder unless committed
+    // adopt_incomplete: carry on in the DIR.incomplete an interrupted run left (resume).
+    explicit StagedDirectory(std::filesystem::path final_dir, bool adopt_incomplete = false);
+    // Removes the staging folder unless committed; after keep_if_failed() a failed run's
+    // folder is kept as DIR.incomplete (it holds a checkpoint to resume from).
+    ~StagedDirectory();
+    void keep_if_failed() { keep_ = true; }
+    bool adopted() const { return adopted_; }
+    std::filesystem::path incomplete_path() const;
     StagedDirectory(const StagedDirectory&) = delete;
     StagedDirectory& operator=(const StagedDirectory&) = delete;
 
@@ -20,6 +26,8 @@ public:
 private:
     std::filesystem::path final_, staging_;
     bool committed_ = false;
+    bool keep_ = false;
+    bool adopted_ = false;
 };
 
 }  // namespace pilempm::io

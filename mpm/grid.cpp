@@ -13,6 +13,8 @@ void Grid<D>::allocate() {
     velocity.assign(D * n, 0.0);
     acceleration.assign(D * n, 0.0);
     fixed.assign(D * n, 0);
+    prescribed.assign(D * n, 0.0);
+    reaction.assign(D * n, 0.0);
     dashpot.assign(D * n, 0.0);
 }
 

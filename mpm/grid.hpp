@@ -19,7 +19,9 @@ struct Grid {
     std::vector<double> force;         // D per node, internal + external
     std::vector<double> velocity;      // D per node, after the update
     std::vector<double> acceleration;  // D per node
-    std::vector<unsigned char> fixed;  // D per node: 1 = that velocity component is held at 0
+    std::vector<unsigned char> fixed;  // D per node: 1 = that velocity component is prescribed
+    std::vector<double> prescribed;    // D per node: the prescribed velocity (0 for supports)
+    std::vector<double> reaction;      // D per node: force the prescription exerted last step, N
     std::vector<double> dashpot;       // D per node, N s/m (absorbing boundaries)
 
     void allocate();

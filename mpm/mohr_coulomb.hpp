@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "mpm/constitutive_model.hpp"
 
 namespace pilempm::mpm {
@@ -34,7 +36,7 @@ public:
     double p_wave_modulus() const override { return lambda_ + 2.0 * mu_; }
     double shear_modulus() const override { return mu_; }
 
-    // The effective (clamped) tension cut-off, Pa; +infinity when there is none.
+    // The tension cut-off after clamping to the apex, Pa (+infinity: none, Tresca only).
     double tension_cutoff() const { return t_; }
     // max(Mohr-Coulomb f, largest principal stress - cut-off) of a Voigt stress, Pa:
     // <= 0 on or inside the elastic domain.
@@ -50,19 +52,22 @@ private:
         std::array<double, 3> vertex{};                  // the corner stress when n == 3
     };
     static constexpr int kPlanes = 6;  // MC: s1-s3, s2-s3, s1-s2; tension: s1, s2, s3
+    using Vec3 = std::array<double, 3>;
     void build_active_sets();
     void add_active_set(std::initializer_list<int> planes);
-    void principal_return(const std::array<double, 3>& trial, std::array<double, 3>& out) const;
-    bool try_active_set(const ActiveSet& set, const std::array<double, 3>& trial,
-                        std::array<double, 3>& out) const;
-    void radial_fallback(const std::array<double, 3>& trial, std::array<double, 3>& out) const;
-    double principal_yield(const std::array<double, 3>& s) const;
-    double plastic_strain_increment(const std::array<double, 3>& trial,
-                                    const std::array<double, 3>& out) const;
+    bool clearly_elastic(const Eigen::Matrix3d& m) const;
+    void plastic_corrector(const Eigen::Matrix3d& m, double* voigt, double& eps_p) const;
+    void principal_return(const Vec3& trial, Vec3& out) const;
+    double return_to_set(const ActiveSet& set, const Vec3& trial, Vec3& out,
+                         double& min_multiplier) const;
+    void radial_fallback(const Vec3& trial, Vec3& out) const;
+    double principal_yield(const Vec3& s) const;
+    double energy_distance(const Vec3& trial, const Vec3& out) const;
+    double plastic_strain_increment(const Vec3& trial, const Vec3& out) const;
 
     double E_, nu_, lambda_, mu_;
     double sin_phi_, cos_phi_, sin_psi_, c_;
-    double t_;            // effective tension cut-off (+inf when none)
+    double t_;            // tension cut-off clamped to the apex (+inf possible for Tresca)
     bool tension_;        // whether the cut-off planes cut the cone (t below the apex)
     double apex_;         // c cot(phi) (+inf for Tresca)
     std::array<std::array<double, 3>, kPlanes> a_{}, Db_{};  // normals and D * flow dirs

@@ -9,6 +9,9 @@
 
 namespace pilempm::mpm {
 
+// Below this many points a step is too short to pay for waking threads.
+constexpr long kParallelPoints = 4000;
+
 template <int D>
 MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
     if (m_.axisymmetric && D != 2) throw std::invalid_argument("axisymmetry needs D = 2");
@@ -43,7 +46,7 @@ void MpmSolver<D>::compute_stencils() {
     auto& p = m_.particles;
     const long n = static_cast<long>(p.size());
     int outside = 0;
-#pragma omp parallel for schedule(static) reduction(+ : outside)
+#pragma omp parallel for schedule(static) reduction(+ : outside) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
         if (!m_.grid.inside(&p.x[D * i])) {  // no throwing inside a parallel region
             ++outside;
@@ -75,17 +78,19 @@ void MpmSolver<D>::scatter(int fields, Accumulate&& accumulate, std::vector<doub
     const int threads = omp_get_max_threads();
     thread_buffer_.resize(threads);
     const long n = static_cast<long>(m_.particles.size());
-#pragma omp parallel
+    int used = 1;  // threads that ran: only their buffers hold this step's sums
+#pragma omp parallel if (n > kParallelPoints)
     {
+#pragma omp single
+        used = omp_get_num_threads();
         auto& buf = thread_buffer_[omp_get_thread_num()];
         buf.assign(size, 0.0);
 #pragma omp for schedule(static)
         for (long i = 0; i < n; ++i) accumulate(i, buf.data());
     }
     out.assign(size, 0.0);
-    for (int t = 0; t < threads; ++t) {
+    for (int t = 0; t < used; ++t) {
         const auto& buf = thread_buffer_[t];
-        if (buf.size() != size) continue;
         for (std::size_t k = 0; k < size; ++k) out[k] += buf[k];
     }
 }
@@ -149,7 +154,7 @@ void MpmSolver<D>::update_grid(double dt) {
         for (int d = 0; d < D; ++d) {
             const int k = D * n + d;
             if (mass <= tiny) {
-                g.velocity[k] = g.acceleration[k] = 0.0;
+                g.velocity[k] = g.acceleration[k] = g.reaction[k] = 0.0;
                 continue;
             }
             const double v0 = g.momentum[k] / mass;
@@ -164,7 +169,12 @@ void MpmSolver<D>::update_grid(double dt) {
             // Absorbing dashpot taken at mid-step: stable for any impedance.
             const double c = g.dashpot[k];
             double v1 = ((mass / dt - 0.5 * c) * v0 + f) / (mass / dt + 0.5 * c);
-            if (g.fixed[k]) v1 = 0.0;
+            g.reaction[k] = 0.0;
+            if (g.fixed[k]) {
+                // The force the support (or the moving boundary) applied to hold v.
+                g.reaction[k] = mass * (g.prescribed[k] - v1) / dt;
+                v1 = g.prescribed[k];
+            }
             if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
             g.velocity[k] = v1;
             g.acceleration[k] = (v1 - v0) / dt;
@@ -179,7 +189,7 @@ void MpmSolver<D>::grid_to_particles(double dt) {
     const auto& g = m_.grid;
     const long n = static_cast<long>(p.size());
     const double flip = m_.flip;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
         const Stencil<D>& s = stencil_[i];
         double a[D] = {}, vg[D] = {};
@@ -210,7 +220,7 @@ void MpmSolver<D>::map_momentum_back() {
     for (int n = 0; n < nn; ++n)
         for (int d = 0; d < D; ++d) {
             const int k = D * n + d;
-            g.velocity[k] = (g.mass[n] > tiny && !g.fixed[k]) ? scratch_[k] / g.mass[n] : 0.0;
+            g.velocity[k] = g.fixed[k] ? g.prescribed[k] : (g.mass[n] > tiny ? scratch_[k] / g.mass[n] : 0.0);
         }
 }
 
@@ -220,7 +230,7 @@ void MpmSolver<D>::update_stress(double dt) {
     const auto& g = m_.grid;
     const long n = static_cast<long>(p.size());
     int inverted = 0;
-#pragma omp parallel for schedule(static) reduction(+ : inverted)
+#pragma omp parallel for schedule(static) reduction(+ : inverted) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
         const Stencil<D>& s = stencil_[i];
         double L[D][D] = {}, hoop = 0.0;
@@ -282,8 +292,8 @@ void MpmSolver<D>::update_stress(double dt) {
     for (std::size_t mat = 0; mat < m_.materials.size(); ++mat) {
         const auto& pts = points_of_material_[mat];
         const int count = static_cast<int>(pts.size());
-        const int threads = omp_get_max_threads();
-#pragma omp parallel for schedule(static)
+        const int threads = count > kParallelPoints ? omp_get_max_threads() : 1;
+#pragma omp parallel for schedule(static) if (threads > 1)
         for (int t = 0; t < threads; ++t) {
             const int lo = count * t / threads, hi = count * (t + 1) / threads;
             if (hi > lo)

@@ -10,6 +10,11 @@ template <int D>
 int Stencil<D>::slot(int n) {
     for (int k = 0; k < count; ++k)
         if (node[k] == n) return k;
+    return append(n);
+}
+
+template <int D>
+int Stencil<D>::append(int n) {
     if (count >= kMax) throw std::logic_error("shape function stencil overflow");
     node[count] = n;
     N[count] = 0.0;
@@ -58,6 +63,25 @@ Hat1D integrate_hat(double xi, double h, double a, double b, bool weighted) {
     return r;
 }
 
+// Closed-form uGIMP weight and slope (Bardenhagen & Kober 2004) for xi = x_p - x_i and
+// half-length l <= h/2: the same values integrate_hat gives, without the quadrature.
+inline void ugimp_closed_form(double xi, double l, double h, double& S, double& G) {
+    const double a = std::abs(xi), sgn = xi >= 0.0 ? 1.0 : -1.0;
+    if (a < l) {
+        S = 1.0 - (xi * xi + l * l) / (2.0 * h * l);
+        G = -xi / (h * l);
+    } else if (a <= h - l) {
+        S = 1.0 - a / h;
+        G = -sgn / h;
+    } else if (a < h + l) {
+        const double d = h + l - a;
+        S = d * d / (4.0 * h * l);
+        G = -sgn * d / (2.0 * h * l);
+    } else {
+        S = G = 0.0;
+    }
+}
+
 template <int D>
 void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s) {
     std::array<int, D> base{};
@@ -75,7 +99,7 @@ void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s)
             w[d] = bit ? f[d] : 1.0 - f[d];
             dw[d] = (bit ? 1.0 : -1.0) / g.spacing[d];
         }
-        const int k = s.slot(g.node(c));
+        const int k = s.append(g.node(c));
         double N = 1.0;
         for (int d = 0; d < D; ++d) N *= w[d];
         s.N[k] += N;
@@ -105,6 +129,10 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
         n_axis[d] = hi - lo + 1;
         if (n_axis[d] > 4) throw std::logic_error("GIMP domain larger than a cell");
         for (int i = 0; i < n_axis[d]; ++i) {
+            if (!weighted && l <= 0.5 * h) {
+                ugimp_closed_form(x[d] - g.coordinate(d, lo + i), l, h, S[d][i], G[d][i]);
+                continue;
+            }
             const Hat1D r = integrate_hat(g.coordinate(d, lo + i), h, a, b, weighted);
             S[d][i] = r.value / W;
             G[d][i] = r.slope / W;
@@ -128,7 +156,7 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
             for (int d = 0; d < D && !any_gradient; ++d) any_gradient = G[d][idx[d]] != 0.0;
             if (!any_gradient) continue;
         }
-        const int k = s.slot(g.node(c));
+        const int k = s.append(g.node(c));
         s.N[k] += N;
         for (int d = 0; d < D; ++d) {
             double grad = G[d][idx[d]];

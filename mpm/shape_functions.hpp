@@ -21,7 +21,8 @@ struct Stencil {
     double dN[kMax][D];
     double hoop[kMax];  // axisymmetric only (zero otherwise)
     void clear() { count = 0; }
-    int slot(int n);    // the entry for node n, created zeroed if new
+    int slot(int n);    // the entry for node n, created zeroed if new (searches: CPDI)
+    int append(int n);  // a new entry for a node known not to be there yet (linear, GIMP)
 };
 
 // x: point position; domain: D half-edge vectors of the particle domain (row k = vector k),

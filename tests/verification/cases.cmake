@@ -14,3 +14,7 @@ pilempm_case_test(north_sea_monopile_axisymmetric cases/pile-wave/north-sea-mono
 pilempm_case_test(verify_drivability_checks cases/verification/drivability-checks.yaml verification)
 pilempm_case_test(north_sea_monopile_drivability cases/drivability/north-sea-monopile.yaml validation)
 pilempm_case_test(example_cpt_sand_over_clay cases/drivability/cpt-sand-over-clay.yaml validation)
+# MPM soil core (issue 4).
+pilempm_case_test(verify_mpm_column_plane_strain cases/verification/mpm-column-plane-strain.yaml verification)
+pilempm_case_test(verify_mpm_column_axisymmetric cases/verification/mpm-column-axisymmetric.yaml verification)
+pilempm_case_test(verify_mpm_column_3d cases/verification/mpm-column-3d.yaml verification)
