@@ -61,8 +61,7 @@ bool in_box(const io::MpmBox& b, const double* x) {
 
 // A pressure's force on each loaded point: -p n x the point's face area on that face.
 struct PointLoad {
-    int point;
-    double force[3];
+    mpm::SurfaceLoad load;
     double duration;
 };
 
@@ -123,9 +122,14 @@ MpmRun<D> build(const io::MpmCase& c) {
             double area = 1.0;
             for (int d = 0; d < D; ++d)
                 if (d != pr.normal_axis) area *= p.domain0[D * D * i + D * d + d];
-            if (c.axisymmetric) area *= p.x[D * i];
-            PointLoad load{static_cast<int>(i), {0, 0, 0}, pr.duration};
-            load.force[pr.normal_axis] = -pr.pressure * pr.normal_sign * area;
+            // Per radian the face's area scales with its own radius (the particle's face,
+            // not its centre, when the face is normal to r).
+            if (c.axisymmetric)
+                area *= p.x[D * i] + (pr.normal_axis == 0 ? 0.5 * pr.normal_sign * p.domain0[0] : 0.0);
+            PointLoad load{{}, pr.duration};
+            load.load.point = static_cast<int>(i);
+            load.load.force[pr.normal_axis] = -pr.pressure * pr.normal_sign * area;
+            load.load.offset[pr.normal_axis] = 0.5 * pr.normal_sign * p.domain0[D * D * i + D * pr.normal_axis + pr.normal_axis];
             run.loads.push_back(load);
         }
     for (const auto& v : c.velocities)
@@ -169,13 +173,10 @@ MpmRun<D> build(const io::MpmCase& c) {
 
 template <int D>
 void apply_loads(MpmRun<D>& run, double time, bool held_only) {
-    auto& ef = run.model.particles.external_force;
-    std::fill(ef.begin(), ef.end(), 0.0);
-    for (const auto& l : run.loads) {
-        const bool active = l.duration <= 0.0 || (!held_only && time < l.duration);
-        if (!active) continue;
-        for (int d = 0; d < D; ++d) ef[D * l.point + d] += l.force[d];
-    }
+    auto& active = run.model.surface_loads;
+    active.clear();
+    for (const auto& l : run.loads)
+        if (l.duration <= 0.0 || (!held_only && time < l.duration)) active.push_back(l.load);
 }
 
 template <int D>

@@ -42,41 +42,63 @@ VerificationCheck self_weight(const io::MpmCase& c, const mpm::MpmModel<D>& m, c
 }
 
 // Lame: sigma_r = -p a^2/(b^2-a^2) (b^2/r^2 - 1), sigma_theta = p a^2/(b^2-a^2) (b^2/r^2 + 1).
-std::vector<VerificationCheck> lame(const io::MpmCase& c, const mpm::MpmModel<2>& m) {
+// Stresses of a linear basis are first-order accurate at arbitrary points but second-order
+// at cell centres: the check compares each cell's mean point stress with the exact value at
+// the cell's mean (initial) radius.
+std::vector<VerificationCheck> lame(const io::MpmCase& c, const mpm::MpmModel<2>& m, const std::vector<double>& x0) {
     const double a = parameter(c, "inner_radius", "lame_cylinder"), b = parameter(c, "outer_radius", "lame_cylinder");
     const double pr = parameter(c, "pressure", "lame_cylinder");
-    const double h = m.grid.spacing[0];
+    const auto& g = m.grid;
     const auto& p = m.particles;
+    const int cells = g.cells[0];
+    std::vector<double> r_sum(cells, 0.0), sr(cells, 0.0), st(cells, 0.0), n(cells, 0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const int k = g.cell_of(0, x0[2 * i]);
+        r_sum[k] += x0[2 * i];
+        sr[k] += p.stress[6 * i + 0];
+        st[k] += p.stress[6 * i + 2];
+        n[k] += 1.0;
+    }
     double err_r = 0.0, err_t = 0.0;
     const double k = pr * a * a / (b * b - a * a);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const double r = p.x[2 * i];
-        if (r < a + h || r > b - h) continue;  // a cell away from the loaded and free faces
-        err_r = std::max(err_r, std::abs(p.stress[6 * i + 0] + k * (b * b / (r * r) - 1.0)) / pr);
-        err_t = std::max(err_t, std::abs(p.stress[6 * i + 2] - k * (b * b / (r * r) + 1.0)) / pr);
+    for (int j = 0; j < cells; ++j) {
+        if (n[j] == 0.0) continue;
+        const double r = r_sum[j] / n[j];
+        err_r = std::max(err_r, std::abs(sr[j] / n[j] + k * (b * b / (r * r) - 1.0)) / pr);
+        err_t = std::max(err_t, std::abs(st[j] / n[j] - k * (b * b / (r * r) + 1.0)) / pr);
     }
-    return {make_check("radial_stress_max_error_over_p", err_r, 0.0, 0.02, false, "Lame solution, a cell from the faces"),
-            make_check("hoop_stress_max_error_over_p", err_t, 0.0, 0.02, false, "Lame solution, a cell from the faces")};
+    return {make_check("radial_stress_max_error_over_p", err_r, 0.0, 0.02, false,
+                       "Lame solution against the cell-averaged point stresses, every cell"),
+            make_check("hoop_stress_max_error_over_p", err_t, 0.0, 0.02, false,
+                       "Lame solution against the cell-averaged point stresses, every cell")};
 }
 
+// Half-amplitude arrival of the pulse at a probe (linear between samples).
+double arrival(const std::vector<double>& t, const std::vector<double>& v, double plateau, double& dt) {
+    double when = -1.0;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        const double a = std::abs(v[i - 1]) - 0.5 * plateau, b = std::abs(v[i]) - 0.5 * plateau;
+        if (t[i] > t[i - 1]) dt = std::max(dt, t[i] - t[i - 1]);
+        if (when < 0.0 && a < 0.0 && b >= 0.0) when = t[i - 1] + (t[i] - t[i - 1]) * a / (a - b);
+    }
+    return when;
+}
+
+// Travel time of the pulse between two probes `depth` apart: the wave speed, free of how
+// the surface load enters the first row of points.
 template <int D>
 VerificationCheck wave_arrival(const io::MpmCase& c, const mpm::MpmModel<D>& m, const Table& history) {
     const double depth = parameter(c, "depth", "wave_arrival");
     const double pressure = parameter(c, "pressure", "wave_arrival");
-    const auto& mat = m.materials.front();
     const double rho = c.materials.front().density;
-    const double cp = std::sqrt(mat->p_wave_modulus() / rho);
+    const double cp = std::sqrt(m.materials.front()->p_wave_modulus() / rho);
     const double plateau = pressure / (rho * cp);  // particle speed behind the front
     const auto& t = column(history, "time_s");
-    const auto& v = column(history, "probe0_velocity_vertical_m_s");
-    double arrival = -1.0, dt = 0.0;
-    for (std::size_t i = 1; i < t.size(); ++i) {
-        const double a = std::abs(v[i - 1]) - 0.5 * plateau, b = std::abs(v[i]) - 0.5 * plateau;
-        if (t[i] > t[i - 1]) dt = std::max(dt, t[i] - t[i - 1]);
-        if (arrival < 0.0 && a < 0.0 && b >= 0.0) arrival = t[i - 1] + (t[i] - t[i - 1]) * a / (a - b);
-    }
-    return make_check("wave_arrival_time_s", arrival, depth / cp, dt, false,
-                      "half-amplitude arrival at the probe against depth / c_p, within one time step");
+    double dt = 0.0;
+    const double first = arrival(t, column(history, "probe0_velocity_vertical_m_s"), plateau, dt);
+    const double second = arrival(t, column(history, "probe1_velocity_vertical_m_s"), plateau, dt);
+    return make_check("wave_travel_time_between_probes_s", second - first, depth / cp, dt, false,
+                      "half-amplitude arrivals at two probes against their distance / c_p, within one time step");
 }
 
 VerificationCheck absorbed(const Table& history) {
@@ -102,7 +124,7 @@ std::vector<VerificationCheck> run_mpm_verification(const io::MpmCase& c, const 
         if (name == "self_weight_stress") out.push_back(self_weight<D>(c, m, x0));
         else if (name == "lame_cylinder") {
             if constexpr (D == 2) {
-                auto v = lame(c, m);
+                auto v = lame(c, m, x0);
                 out.insert(out.end(), v.begin(), v.end());
             } else {
                 throw std::invalid_argument("lame_cylinder is an axisymmetric check");

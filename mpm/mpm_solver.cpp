@@ -141,6 +141,21 @@ void MpmSolver<D>::particles_to_grid() {
     external_.resize(D * nn);
     for (int n = 0; n < nn; ++n)
         for (int d = 0; d < D; ++d) external_[D * n + d] = scratch_[F * n + 1 + 2 * D + d];
+    // Surface loads at the loaded faces (few points: serial).
+    Stencil<D> at_face;
+    for (const auto& load : m_.surface_loads) {
+        double x[D];
+        for (int d = 0; d < D; ++d) {
+            x[d] = p.x[D * load.point + d];
+            for (int e = 0; e < D; ++e) x[d] += p.F[D * D * load.point + D * d + e] * load.offset[e];
+        }
+        evaluate_shape<D>(g, ShapeKind::Linear, false, x, nullptr, at_face);
+        for (int k = 0; k < at_face.count; ++k)
+            for (int d = 0; d < D; ++d) {
+                g.force[D * at_face.node[k] + d] += at_face.N[k] * load.force[d];
+                external_[D * at_face.node[k] + d] += at_face.N[k] * load.force[d];
+            }
+    }
 }
 
 template <int D>

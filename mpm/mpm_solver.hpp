@@ -15,6 +15,15 @@
 
 namespace pilempm::mpm {
 
+// A load on the face of a material point (a pressure on a free surface): it acts at the
+// point's face, x_p + F offset, through the grid hats there, so the traction is delivered
+// where the surface is rather than at the point's centre.
+struct SurfaceLoad {
+    int point = 0;
+    double offset[3] = {0, 0, 0};  // from the centre to the loaded face, undeformed, m
+    double force[3] = {0, 0, 0};   // N (per radian in axisymmetry)
+};
+
 template <int D>
 struct MpmModel {
     Grid<D> grid;
@@ -26,6 +35,7 @@ struct MpmModel {
     double flip = 0.98;                 // FLIP fraction of the particle velocity update
     double cfl = 0.5;                   // of the P-wave crossing time of a cell
     double local_damping = 0.0;         // Cundall's alpha (quasi-static stages)
+    std::vector<SurfaceLoad> surface_loads;  // the active ones; set between steps
 };
 
 template <int D>
