@@ -1,5 +1,6 @@
 #include "app/mpm_job.hpp"
 
+#include <algorithm>
 #include <csignal>
 #include <cmath>
 #include <cstdio>
@@ -187,6 +188,24 @@ double elastic_energy(const mpm::Particles<D>& p) {
     return e;
 }
 
+// The case's quasi-static stages run with no output: used to rerun a case with another
+// shape function for the stress-noise comparison.
+template <int D>
+MpmRun<D> run_quietly(const io::MpmCase& c) {
+    MpmRun<D> run = build<D>(c);
+    mpm::MpmSolver<D> solver(run.model);
+    for (const auto& st : c.stages) {
+        if (!st.quasi_static) throw std::invalid_argument("stress_noise reruns quasi-static stages only");
+        run.model.local_damping = st.local_damping;
+        for (long n = 0; n < st.max_steps; ++n) {
+            apply_loads(run, 0.0, true);
+            solver.step(solver.stable_time_step());
+            if (n >= 100 && solver.unbalanced_force_ratio() < st.tolerance) break;
+        }
+    }
+    return run;
+}
+
 std::string fingerprint(const io::MpmCase& c) {
     return c.file + "|" + std::to_string(c.dimension) + "|" + std::to_string(c.cells[0]) + "x" +
            std::to_string(c.cells[1]) + "x" + std::to_string(c.cells[2]) + "|" + std::to_string(c.stages.size());
@@ -317,7 +336,20 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         .add("grid_nodes", static_cast<double>(m.grid.num_nodes())).add("steps", static_cast<double>(solver.steps()))
         .add("simulated_time_s", solver.time());
     if (!c.verification_checks.empty()) {
-        const auto checks = run_mpm_verification<D>(c, m, run.x0, history);
+        auto checks = run_mpm_verification<D>(c, m, run.x0, history);
+        if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "stress_noise") !=
+            c.verification_checks.end()) {
+            io::MpmCase linear = c;
+            linear.shape = mpm::ShapeKind::Linear;
+            const MpmRun<D> reference = run_quietly<D>(linear);
+            const double noise = stress_noise<D>(c, m, run.x0);
+            const double noise_linear = stress_noise<D>(c, reference.model, reference.x0);
+            auto k = coupling::make_check("stress_noise_over_linear", noise / noise_linear, 0.0, 1.0, false,
+                                          "RMS error of the vertical stress against the linear-shape-function run");
+            k.passed = noise < noise_linear;
+            checks.push_back(k);
+            summary.add("stress_noise_rms_relative", noise).add("stress_noise_rms_relative_linear", noise_linear);
+        }
         io::write_json(staged.path() / "verification.json", verification_json(c, checks, io::JsonObject{}));
         if (!quiet)
             for (const auto& k : checks)

@@ -15,4 +15,9 @@ template <int D>
 std::vector<coupling::VerificationCheck> run_mpm_verification(const io::MpmCase& c, const mpm::MpmModel<D>& m,
                                                               const std::vector<double>& x0, const Table& history);
 
+// RMS of (sigma_v - rho g z) / (rho g H) over the points: the stress noise of a column
+// under its weight (verification.surface gives the top).
+template <int D>
+double stress_noise(const io::MpmCase& c, const mpm::MpmModel<D>& m, const std::vector<double>& x0);
+
 }  // namespace pilempm::app

@@ -36,6 +36,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -68,14 +69,15 @@ Vec3 mc_normal(int i, int j, double sin_x) {
 }  // namespace
 
 MohrCoulomb::MohrCoulomb(double E, double nu, double phi_deg, double psi_deg, double c, double t)
-    : E_(E), nu_(nu), c_(c) {
+    : E_(E), nu_(nu) {
     if (!(E > 0.0) || !(nu > -1.0 && nu < 0.5))
         throw std::invalid_argument("mohr_coulomb: E > 0, -1 < nu < 0.5");
     if (!(phi_deg >= 0.0 && phi_deg < 90.0) || !(psi_deg >= 0.0 && psi_deg <= phi_deg))
         throw std::invalid_argument("mohr_coulomb: 0 <= dilation angle <= friction angle < 90");
     if (!(c >= 0.0) || std::isinf(c) || (phi_deg == 0.0 && !(c > 0.0)))
         throw std::invalid_argument("mohr_coulomb: finite cohesion >= 0, and > 0 when phi = 0");
-    if (std::isnan(t)) throw std::invalid_argument("mohr_coulomb: tension cut-off is NaN");
+    if (std::isnan(t) || t == -kInf)
+        throw std::invalid_argument("mohr_coulomb: tension cut-off must be a number or +inf");
     lambda_ = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
     mu_ = E / (2.0 * (1.0 + nu));
     const double to_rad = std::numbers::pi / 180.0;
@@ -158,29 +160,31 @@ double MohrCoulomb::principal_yield(const Vec3& s) const {
 }
 
 // Return of the sorted trial onto one active set: multipliers from the constant inverse,
-// one step of iterative refinement so the result lies on its planes to rounding of the
-// result, not of the (possibly huge) trial. Returns the feasibility violation of the result
-// (<= tolerance: feasible) and writes the smallest multiplier to min_multiplier.
+// then one step of iterative refinement so that the result lies on its planes to rounding
+// of the result, not of the (possibly huge) trial. Returns the criterion at the result
+// (<= 0 up to rounding: admissible) and writes the smallest multiplier to min_multiplier.
 double MohrCoulomb::return_to_set(const ActiveSet& set, const Vec3& trial, Vec3& out,
                                   double& min_multiplier) const {
-    std::array<double, 3> f{}, dl{};
-    for (int i = 0; i < set.n; ++i) f[i] = dot(a_[set.planes[i]], trial) - k_[set.planes[i]];
-    for (int i = 0; i < set.n; ++i)
-        for (int j = 0; j < set.n; ++j) dl[i] += set.inverse[i][j] * f[j];
+    // Multipliers that bring the active planes' values at `s` to zero.
+    auto multipliers = [&](const Vec3& s) {
+        Vec3 f{}, dl{};
+        for (int i = 0; i < set.n; ++i) f[i] = dot(a_[set.planes[i]], s) - k_[set.planes[i]];
+        for (int i = 0; i < set.n; ++i)
+            for (int j = 0; j < set.n; ++j) dl[i] += set.inverse[i][j] * f[j];
+        return dl;
+    };
+    auto apply = [&](const Vec3& dl) {
+        for (int j = 0; j < set.n; ++j)
+            for (int i = 0; i < 3; ++i) out[i] -= dl[j] * Db_[set.planes[j]][i];
+    };
+    const Vec3 dl = multipliers(trial);
     min_multiplier = *std::min_element(dl.begin(), dl.begin() + set.n);
     if (set.n == 3) {
-        out = set.vertex;
+        out = set.vertex;  // exact, whatever the size of the trial
     } else {
         out = trial;
-        for (int pass = 0; pass < 2; ++pass) {
-            for (int j = 0; j < set.n; ++j)
-                for (int i = 0; i < 3; ++i) out[i] -= dl[j] * Db_[set.planes[j]][i];
-            // Refinement: the residual of the active planes at the returned point.
-            for (int i = 0; i < set.n; ++i) f[i] = dot(a_[set.planes[i]], out) - k_[set.planes[i]];
-            dl = {0.0, 0.0, 0.0};
-            for (int i = 0; i < set.n; ++i)
-                for (int j = 0; j < set.n; ++j) dl[i] += set.inverse[i][j] * f[j];
-        }
+        apply(dl);
+        apply(multipliers(out));
     }
     return principal_yield(out);
 }
@@ -189,10 +193,15 @@ double MohrCoulomb::return_to_set(const ActiveSet& set, const Vec3& trial, Vec3&
 // for associated flow, used to pick among fallback candidates.
 double MohrCoulomb::energy_distance(const Vec3& trial, const Vec3& out) const {
     const Vec3 ds{trial[0] - out[0], trial[1] - out[1], trial[2] - out[2]};
+    return dot(ds, plastic_strain(ds));
+}
+
+// The principal plastic strain C (s_trial - s) of a stress drop ds at fixed total strain.
+std::array<double, 3> MohrCoulomb::plastic_strain(const Vec3& ds) const {
     const double tr = ds[0] + ds[1] + ds[2];
-    double w = 0.0;
-    for (int i = 0; i < 3; ++i) w += ds[i] * ((1.0 + nu_) * ds[i] - nu_ * tr) / E_;
-    return w;
+    Vec3 e;
+    for (int i = 0; i < 3; ++i) e[i] = ((1.0 + nu_) * ds[i] - nu_ * tr) / E_;
+    return e;
 }
 
 void MohrCoulomb::principal_return(const Vec3& trial, Vec3& out) const {
@@ -240,7 +249,7 @@ void MohrCoulomb::radial_fallback(const Vec3& trial, Vec3& out) const {
     const Vec3 d{trial[0] - p, trial[1] - p, trial[2] - p};
     const double hi = std::max({d[0], d[1], d[2]}), lo = std::min({d[0], d[1], d[2]});
     double alpha = 1.0;
-    const double g = (1.0 + sin_phi_) * hi - (1.0 - sin_phi_) * lo;  // >= 0: hi >= 0 >= lo
+    const double g = (1.0 + sin_phi_) * hi - (1.0 - sin_phi_) * lo;  // >= 0 as hi >= lo
     const double room = std::max(0.0, k_[0] - 2.0 * sin_phi_ * p);
     if (g > room) alpha = room / g;
     if (tension_ && hi > 0.0 && p + alpha * hi > t_) alpha = std::max(0.0, (t_ - p) / hi);
@@ -251,14 +260,8 @@ void MohrCoulomb::radial_fallback(const Vec3& trial, Vec3& out) const {
 // (volumetric part included, so tension and apex flow count). de_p = C (s_trial - s) is
 // independent of how the multipliers split at corners with more than three active planes.
 double MohrCoulomb::plastic_strain_increment(const Vec3& trial, const Vec3& out) const {
-    const Vec3 ds{trial[0] - out[0], trial[1] - out[1], trial[2] - out[2]};
-    const double tr = ds[0] + ds[1] + ds[2];
-    double sum = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        const double de = ((1.0 + nu_) * ds[i] - nu_ * tr) / E_;
-        sum += de * de;
-    }
-    return std::sqrt(2.0 / 3.0 * sum);
+    const Vec3 de = plastic_strain({trial[0] - out[0], trial[1] - out[1], trial[2] - out[2]});
+    return std::sqrt(2.0 / 3.0 * dot(de, de));
 }
 
 void MohrCoulomb::initialise_state(const double*, double* state) const { state[0] = 0.0; }
@@ -300,7 +303,7 @@ void MohrCoulomb::update(int count, const int* points, const double* de, double*
         if (!clearly_elastic(m)) {
             double eps_p = 0.0;
             plastic_corrector(m, trial, eps_p);
-            state[stride * p] += eps_p;
+            state[static_cast<std::size_t>(stride) * p] += eps_p;
         }
         std::copy(trial, trial + 6, s);
     }

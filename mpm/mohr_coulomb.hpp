@@ -63,10 +63,11 @@ private:
     void radial_fallback(const Vec3& trial, Vec3& out) const;
     double principal_yield(const Vec3& s) const;
     double energy_distance(const Vec3& trial, const Vec3& out) const;
+    Vec3 plastic_strain(const Vec3& stress_drop) const;
     double plastic_strain_increment(const Vec3& trial, const Vec3& out) const;
 
     double E_, nu_, lambda_, mu_;
-    double sin_phi_, cos_phi_, sin_psi_, c_;
+    double sin_phi_, cos_phi_, sin_psi_;
     double t_;            // tension cut-off clamped to the apex (+inf possible for Tresca)
     bool tension_;        // whether the cut-off planes cut the cone (t below the apex)
     double apex_;         // c cot(phi) (+inf for Tresca)

@@ -1,0 +1,61 @@
+// MPM throughput in particle-steps per second: 2D linear-elastic uGIMP, 2D Mohr-Coulomb
+// CPDI and 3D linear-elastic uGIMP, on 1 and 2 threads (the argument).
+// Run: build/tests/pilempm_benchmarks --benchmark_filter=Mpm
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include "mpm/model_setup.hpp"
+#include "mpm/mohr_coulomb.hpp"
+#include "mpm/mpm_solver.hpp"
+
+using namespace pilempm::mpm;
+
+namespace {
+
+// A block of soil on a fixed base under gravity, 2 points per cell per direction.
+template <int D>
+MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb) {
+    MpmModel<D> m;
+    for (int d = 0; d < D; ++d) {
+        m.grid.origin[d] = 0.0;
+        m.grid.spacing[d] = 0.25;
+        m.grid.cells[d] = d == D - 1 ? cells_across + 4 : cells_across;
+    }
+    m.grid.allocate();
+    m.shape = shape;
+    m.gravity[D - 1] = -9.81;
+    if (mohr_coulomb) m.materials.push_back(std::make_unique<MohrCoulomb>(20e6, 0.3, 30.0, 0.0, 5e3, 0.0));
+    else m.materials.push_back(std::make_unique<LinearElastic>(20e6, 0.3));
+    m.particles.state_stride = m.materials.front()->num_state();
+    const double top = 0.25 * cells_across;
+    fill_region<D>(m.grid, m.particles, [top](const double* x) { return x[D - 1] < top; }, 2, 2000.0, 0, false);
+    apply_boundary<D>(m.grid, D - 1, 0, BoundaryKind::Fixed);
+    for (int d = 0; d < D - 1; ++d) {
+        apply_boundary<D>(m.grid, d, 0, BoundaryKind::Roller);
+        apply_boundary<D>(m.grid, d, 1, BoundaryKind::Roller);
+    }
+    return m;
+}
+
+template <int D>
+void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells) {
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    MpmModel<D> m = block<D>(cells, shape, mohr_coulomb);
+    MpmSolver<D> solver(m);
+    const double dt = solver.stable_time_step();
+    for (auto _ : state) solver.step(dt);
+    const double n = static_cast<double>(m.particles.size());
+    state.counters["points"] = n;
+    state.counters["particle_steps_per_s"] =
+        benchmark::Counter(n * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    omp_set_num_threads(omp_get_num_procs());
+}
+
+void BM_Mpm2dElasticGimp(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100); }
+void BM_Mpm2dMohrCoulombCpdi(benchmark::State& s) { run<2>(s, ShapeKind::CPDI, true, 100); }
+void BM_Mpm3dElasticGimp(benchmark::State& s) { run<3>(s, ShapeKind::GIMP, false, 20); }
+BENCHMARK(BM_Mpm2dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Mpm2dMohrCoulombCpdi)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Mpm3dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
