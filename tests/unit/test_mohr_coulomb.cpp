@@ -98,6 +98,7 @@ TEST(MohrCoulomb, RejectsBadParameters) {
 // the triaxial-compression edge, extension (axial unloading) on the triaxial-extension
 // edge. Compression positive, sigma1' is the major principal stress and at failure
 // (sigma1' + a) / (sigma3' + a) = (1 + sin phi) / (1 - sin phi), a = c cot phi.
+namespace {
 void drained_triaxial(const MohrCoulomb& mc, double confining, double de_axial, int steps,
                       Point& pt) {
     pt = Point{};
@@ -120,6 +121,7 @@ void drained_triaxial(const MohrCoulomb& mc, double confining, double de_axial, 
         ASSERT_NEAR(pt.s[2], pt.s[0], 1e-9 * confining);
     }
 }
+}  // namespace
 
 TEST(MohrCoulomb, DrainedTriaxialReachesMohrCoulombFailure) {
     const double E = 20e6, nu = 0.3, phi = 30.0, c = 10e3, confining = 100e3;
@@ -185,6 +187,9 @@ TEST(MohrCoulomb, TrescaSimpleShearCapsAtCohesion) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(pt.s[i], -200e3, 1e-8 * c);
     EXPECT_NEAR(pt.s[4], 0.0, 1e-8 * c);
     EXPECT_NEAR(pt.s[5], 0.0, 1e-8 * c);
+    // Plastic engineering shear 0.1 - c/G; eps_p = sqrt(2/3 de:de) = gamma_p / sqrt(3).
+    const double gamma_p = 0.1 - c / mc.shear_modulus();
+    EXPECT_NEAR(pt.eps_p, gamma_p / std::sqrt(3.0), 1e-9 * gamma_p);
     // Reversed shear unloads elastically, then caps at -c.
     Point back = pt;
     step(mc, back, {0, 0, 0, -1e-3, 0, 0});
