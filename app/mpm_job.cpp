@@ -277,7 +277,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     for (std::size_t s = first_stage; s < c.stages.size(); ++s) {
         const auto& st = c.stages[s];
         TerminalProgress progress("mpm stage '" + st.name + "'", !quiet);
-        m.local_damping = st.quasi_static ? st.local_damping : 0.0;
+        m.local_damping = st.local_damping;
         if (st.quasi_static) {
             // Pseudo-time: the clock stands still, held loads only, until equilibrium.
             const double t_keep = solver.time();

@@ -116,6 +116,35 @@ VerificationCheck absorbed(const Table& history) {
 
 }  // namespace
 
+// Strip footing on Tresca soil: the largest footing pressure (reaction of the pushed nodes,
+// a half model: x2, over the footing width) against Prandtl's (2 + pi) c.
+VerificationCheck footing(const io::MpmCase& c, const Table& history, int D) {
+    const double width = parameter(c, "column_width", "footing_collapse");  // full footing width B
+    const double cohesion = parameter(c, "reference", "footing_collapse");
+    const auto& r = column(history, D == 2 ? "reaction_y_N" : "reaction_z_N");
+    double peak = 0.0;
+    for (double x : r) peak = std::max(peak, -x);  // the soil pushes the footing up
+    const double q = 2.0 * peak / width;
+    return make_check("footing_collapse_pressure_over_c", q / cohesion, 2.0 + M_PI, 0.05, true,
+                      "Prandtl: q_u = (2 + pi) c for a strip footing on weightless Tresca soil");
+}
+
+// K0 initial stress: sigma_h / sigma_v of every point against the material's K0, after the
+// nil stage (which must leave the K0 state in equilibrium).
+template <int D>
+VerificationCheck k0_ratio(const io::MpmCase& c, const mpm::MpmModel<D>& m) {
+    const double k0 = parameter(c, "reference", "k0_ratio");
+    const auto& p = m.particles;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double sv = p.stress[6 * i + (D == 2 ? 1 : 2)];
+        if (sv > -1e3) continue;  // the top row: ratios of tiny stresses say little
+        worst = std::max(worst, std::abs(p.stress[6 * i + 0] / sv - k0));
+    }
+    return make_check("horizontal_over_vertical_stress_max_deviation", worst, 0.0, 0.02, false,
+                      "|sigma_h / sigma_v - K0| over the points after the nil step");
+}
+
 template <int D>
 std::vector<VerificationCheck> run_mpm_verification(const io::MpmCase& c, const mpm::MpmModel<D>& m,
                                                     const std::vector<double>& x0, const Table& history) {
@@ -132,6 +161,8 @@ std::vector<VerificationCheck> run_mpm_verification(const io::MpmCase& c, const 
         } else if (name == "wave_arrival") out.push_back(wave_arrival<D>(c, m, history));
         else if (name == "absorbed_energy") out.push_back(absorbed(history));
         else if (name == "stress_noise") continue;  // needs a second run: done by the job
+        else if (name == "k0_ratio") out.push_back(k0_ratio<D>(c, m));
+        else if (name == "footing_collapse") out.push_back(footing(c, history, D));
         else throw std::invalid_argument("verification check " + name + " is not available yet for MPM cases");
     }
     return out;

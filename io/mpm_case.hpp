@@ -54,7 +54,7 @@ struct MpmStageInput {
     double duration = 0.0;          // s (dynamic)
     long max_steps = 100000;        // quasi-static
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)
-    double local_damping = 0.7;     // quasi-static
+    double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
 };
 
 struct MpmCase : CaseFile {

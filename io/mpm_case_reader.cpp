@@ -10,7 +10,7 @@ namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
                                           "absorbed_energy", "footing_collapse", "column_runout",
-                                          "stress_noise"};
+                                          "stress_noise", "k0_ratio"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
     const auto v = m.numbers(key, {"a coordinate in m", [](double) { return true; }});
@@ -121,6 +121,9 @@ MpmStageInput read_stage(MapReader m) {
         s.local_damping = m.number_or("local_damping", 0.7, in_open_range(0.0, 1.0, "a damping coefficient"));
     } else {
         s.duration = m.number("duration", positive("duration in s"));
+        // A displacement-controlled push can be made quasi-static with local damping.
+        s.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
+                                                             [](double x) { return x >= 0.0 && x < 1.0; }});
     }
     m.finish();
     return s;

@@ -174,10 +174,16 @@ void MpmSolver<D>::update_grid(double dt) {
             }
             const double v0 = g.momentum[k] / mass;
             double f = g.force[k];
-            if (!g.fixed[k]) {
-                unbalanced += f * f;
-                applied += external_[k] * external_[k];
+            if (g.fixed[k]) {
+                // The force the support (or moving boundary) exerts to hold v: from the
+                // undamped nodal force, so damping never shows up as a reaction.
+                g.reaction[k] = mass * (g.prescribed[k] - v0) / dt - f;
+                g.velocity[k] = g.prescribed[k];
+                g.acceleration[k] = (g.prescribed[k] - v0) / dt;
+                continue;
             }
+            unbalanced += f * f;
+            applied += external_[k] * external_[k];
             // Cundall's local damping: a force against the motion, in proportion to the
             // unbalanced force, so equilibrium is reached without a global viscosity.
             if (m_.local_damping > 0.0 && v0 != 0.0) f -= m_.local_damping * std::abs(f) * (v0 > 0.0 ? 1.0 : -1.0);
@@ -185,11 +191,6 @@ void MpmSolver<D>::update_grid(double dt) {
             const double c = g.dashpot[k];
             double v1 = ((mass / dt - 0.5 * c) * v0 + f) / (mass / dt + 0.5 * c);
             g.reaction[k] = 0.0;
-            if (g.fixed[k]) {
-                // The force the support (or the moving boundary) applied to hold v.
-                g.reaction[k] = mass * (g.prescribed[k] - v1) / dt;
-                v1 = g.prescribed[k];
-            }
             if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
             g.velocity[k] = v1;
             g.acceleration[k] = (v1 - v0) / dt;
