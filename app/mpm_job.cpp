@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <numbers>
 
@@ -218,7 +219,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     io::StagedDirectory staged(out_dir, resume);
     const fs::path checkpoint = staged.path() / "checkpoint.h5";
     std::size_t first_stage = 0;
-    double resumed_time = 0.0;
+    double resumed_time = 0.0, resumed_stage_start = -1.0;
     long resumed_steps = 0;
     if (resume) {
         if (!staged.adopted() || !fs::exists(checkpoint))
@@ -228,6 +229,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             throw std::runtime_error("the checkpoint in " + staged.incomplete_path().string() + " belongs to another case");
         for (const auto& [name, value] : info.scalars)
             if (name == "stage") first_stage = static_cast<std::size_t>(value);
+            else if (name == "stage_start_time") resumed_stage_start = value;
         resumed_time = info.time;
         resumed_steps = info.step;
         if (!quiet) std::fprintf(stderr, "resuming at stage %zu, t = %g s, step %ld\n", first_stage + 1, info.time, info.step);
@@ -267,15 +269,25 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
 
     g_interrupted = 0;
     auto previous_handler = std::signal(SIGINT, on_interrupt);
+    // Test hook: behave as if interrupted (Ctrl-C) once this many steps are done.
+    long interrupt_after = -1;
+    if (const char* e = std::getenv("PILEMPM_INTERRUPT_AFTER_STEPS")) interrupt_after = std::atol(e);
+    auto check_interrupt = [&] {
+        if (interrupt_after >= 0 && solver.steps() >= interrupt_after && !resume) g_interrupted = 1;
+    };
+    double stage_start = solver.time();
     auto save = [&](std::size_t stage) {
         io::write_checkpoint<D>(checkpoint, m.particles, solver.time(), solver.steps(),
-                                {{"stage", static_cast<double>(stage)}}, fingerprint(c));
+                                {{"stage", static_cast<double>(stage)}, {"stage_start_time", stage_start}},
+                                fingerprint(c));
         staged.keep_if_failed();
     };
     double next_snapshot = c.snapshot_interval;
     vtk.write(solver.time(), m.particles);
     for (std::size_t s = first_stage; s < c.stages.size(); ++s) {
         const auto& st = c.stages[s];
+        // A resumed stage keeps the start time it had, so it ends when it would have.
+        stage_start = (s == first_stage && resumed_stage_start >= 0.0) ? resumed_stage_start : solver.time();
         TerminalProgress progress("mpm stage '" + st.name + "'", !quiet);
         m.local_damping = st.local_damping;
         if (st.quasi_static) {
@@ -288,6 +300,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                 if (n % 10 == 0) record(s);
                 if (n >= 100 && solver.unbalanced_force_ratio() < st.tolerance) break;
                 if (c.checkpoint_every > 0 && solver.steps() % c.checkpoint_every == 0) save(s);
+                check_interrupt();
                 if (g_interrupted) break;
                 progress.update_count(n, st.max_steps, "steps (quasi-static)");
             }
@@ -299,7 +312,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                             n, solver.unbalanced_force_ratio(), st.tolerance,
                             solver.unbalanced_force_ratio() < st.tolerance ? "" : "  NOT IN EQUILIBRIUM");
         } else {
-            const double t_end = solver.time() + st.duration;
+            const double t_end = stage_start + st.duration;
             while (solver.time() < t_end - 1e-15 && !g_interrupted) {
                 apply_loads(run, solver.time(), false);
                 const double dt = std::min(solver.stable_time_step(), t_end - solver.time());
@@ -310,6 +323,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                     next_snapshot += c.snapshot_interval;
                 }
                 if (c.checkpoint_every > 0 && solver.steps() % c.checkpoint_every == 0) save(s);
+                check_interrupt();
                 progress.update(solver.time(), t_end, solver.steps());
             }
             progress.done();
