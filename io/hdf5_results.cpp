@@ -1,6 +1,6 @@
 #include "io/hdf5_results.hpp"
 
-#include <hdf5.h>
+#include "io/hdf5_handles.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -13,88 +13,18 @@ namespace pilempm::io {
 
 namespace {
 
-// Owns one HDF5 identifier; closes it on every path out, exceptions included.
-class Hid {
+using hdf5::Hid;
+using hdf5::H5Of;
+
+// The results file is written in native types (h5py reads them as such).
+class Writer : public hdf5::Context {
 public:
-    using Closer = herr_t (*)(hid_t);
-    Hid(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-    ~Hid() { reset(); }
-    Hid(const Hid&) = delete;
-    Hid& operator=(const Hid&) = delete;
-    hid_t get() const { return id_; }
-    // Explicit close, so a failing flush of the file is reported, not swallowed.
-    herr_t reset() {
-        herr_t status = 0;
-        if (id_ >= 0) status = closer_(id_);
-        id_ = -1;
-        return status;
-    }
-
-private:
-    hid_t id_;
-    Closer closer_;
-};
-
-template <typename T>
-hid_t native_type();
-template <>
-hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
-template <>
-hid_t native_type<int>() { return H5T_NATIVE_INT; }
-
-// The deepest entry of HDF5's error stack says why (e.g. errno text of a failed open).
-herr_t keep_deepest(unsigned n, const H5E_error2_t* err, void* data) {
-    auto* deepest = static_cast<std::pair<unsigned, std::string>*>(data);
-    if (err->desc && (deepest->second.empty() || n >= deepest->first)) *deepest = {n, err->desc};
-    return 0;
-}
-
-std::string hdf5_error_reason() {
-    std::pair<unsigned, std::string> deepest{0, {}};
-    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, keep_deepest, &deepest);
-    H5Eclear2(H5E_DEFAULT);
-    return deepest.second;
-}
-
-// HDF5 prints its error stack by default; the exception carries the reason instead, so
-// printing is off while we write and restored afterwards.
-class QuietHdf5Errors {
-public:
-    QuietHdf5Errors() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-    ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-    QuietHdf5Errors(const QuietHdf5Errors&) = delete;
-    QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
-
-class Writer {
-public:
-    explicit Writer(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& what) const {
-        const std::string reason = hdf5_error_reason();
-        throw std::runtime_error("HDF5 results file " + file_ + ": " + what +
-                                 (reason.empty() ? "" : " (" + reason + ")"));
-    }
-    Hid make(hid_t id, Hid::Closer closer, const std::string& what) const {
-        if (id < 0) fail(what);
-        return Hid(id, closer);
-    }
-    void check(herr_t status, const std::string& what) const {
-        if (status < 0) fail(what);
-    }
+    explicit Writer(const std::string& file) : hdf5::Context("HDF5 results file " + file) {}
 
     Hid create_group(hid_t parent, const std::string& name, const std::string& path) const {
         // Checked up front: a duplicate name is a caller error worth a clear message.
         if (H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0) fail("duplicate name " + path);
-        return make(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                    H5Gclose, "cannot create group " + path);
+        return hdf5::create_group(*this, parent, name, path);
     }
 
     // rows x cols dataset (1-D when cols == 0), row-major values.
@@ -102,47 +32,19 @@ public:
     void dataset(hid_t parent, const std::string& name, const std::string& path, const T* values,
                  hsize_t rows, hsize_t cols) const {
         if (H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0) fail("duplicate name " + path);
-        const hsize_t dims[2] = {rows, cols};
-        Hid space = make(H5Screate_simple(cols ? 2 : 1, dims, nullptr), H5Sclose,
-                         "cannot create dataspace for " + path);
-        Hid set = make(H5Dcreate2(parent, name.c_str(), native_type<T>(), space.get(),
-                                  H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                       H5Dclose, "cannot create dataset " + path);
-        // HDF5 rejects a null buffer even for zero elements.
-        if (rows * (cols ? cols : 1) > 0)
-            check(H5Dwrite(set.get(), native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values),
-                  "cannot write dataset " + path);
+        hdf5::write_dataset(*this, parent, name, path, values, rows, cols, H5Of<T>::memory());
     }
 
     template <typename T>
     void scalar_attribute(hid_t obj, const std::string& name, T value) const {
-        Hid space = make(H5Screate(H5S_SCALAR), H5Sclose, "cannot create dataspace");
-        Hid attr = make(H5Acreate2(obj, name.c_str(), native_type<T>(), space.get(), H5P_DEFAULT,
-                                   H5P_DEFAULT),
-                        H5Aclose, "cannot create attribute " + name);
-        check(H5Awrite(attr.get(), native_type<T>(), &value), "cannot write attribute " + name);
+        hdf5::write_scalar_attribute(*this, obj, name, value, H5Of<T>::memory());
     }
 
     // Variable-length UTF-8 strings: h5py reads them back as str, not bytes.
     void string_attribute(hid_t obj, const std::string& name,
                           const std::vector<std::string>& values, bool scalar) const {
-        Hid type = make(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create string type");
-        check(H5Tset_size(type.get(), H5T_VARIABLE), "cannot size string type");
-        check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "cannot set string charset");
-        const hsize_t n = values.size();
-        Hid space = make(scalar ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr),
-                         H5Sclose, "cannot create dataspace for attribute " + name);
-        Hid attr = make(
-            H5Acreate2(obj, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-            H5Aclose, "cannot create attribute " + name);
-        std::vector<const char*> ptrs;
-        for (const auto& v : values) ptrs.push_back(v.c_str());
-        if (!ptrs.empty())
-            check(H5Awrite(attr.get(), type.get(), ptrs.data()), "cannot write attribute " + name);
+        hdf5::write_string_attribute(*this, obj, name, values, scalar, hdf5::StringStorage::Variable);
     }
-
-private:
-    std::string file_;
 };
 
 void write_table(const Writer& w, hid_t root, const Table& table) {
@@ -237,8 +139,7 @@ void write_file(const Writer& w, const std::filesystem::path& file,
     for (const auto& [name, value] : attributes) w.scalar_attribute(h5.get(), name, value);
     for (const auto& [name, value] : text_attributes)
         w.string_attribute(h5.get(), name, {value}, true);
-    w.check(H5Fflush(h5.get(), H5F_SCOPE_LOCAL), "cannot flush");
-    w.check(h5.reset(), "cannot close");
+    hdf5::flush_and_close(w, h5);
 }
 
 }  // namespace
@@ -255,8 +156,7 @@ void write_results_h5(const std::filesystem::path& file, const std::vector<Table
                       const std::vector<double>& axial_stress,
                       const std::vector<std::pair<std::string, double>>& attributes,
                       const std::vector<std::pair<std::string, std::string>>& text_attributes) {
-    const QuietHdf5Errors quiet;
-    H5Eclear2(H5E_DEFAULT);  // so a failure reports its own reason, not an older one
+    const hdf5::QuietErrors quiet;
     const Writer w(file.string());
     validate(w, tables, mesh, displacement, velocity, axial_stress);
     try {

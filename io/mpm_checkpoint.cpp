@@ -1,7 +1,8 @@
 #include "io/mpm_checkpoint.hpp"
 
+#include "io/hdf5_handles.hpp"
+
 #include <fcntl.h>
-#include <hdf5.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,105 +26,13 @@ constexpr int kFormatVersion = 1;
 // Datasets are chunked (Fletcher32 needs chunks; a chunk must stay below 4 GiB).
 constexpr hsize_t kChunkValues = hsize_t{1} << 20;
 
-// Owns one HDF5 identifier; closes it on every path out, exceptions included.
-class Hid {
-public:
-    using Closer = herr_t (*)(hid_t);
-    Hid(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-    ~Hid() { reset(); }
-    Hid(const Hid&) = delete;
-    Hid& operator=(const Hid&) = delete;
-    Hid(Hid&& o) noexcept : id_(std::exchange(o.id_, -1)), closer_(o.closer_) {}
-    hid_t get() const { return id_; }
-    // Explicit close, so a failing flush of the file is reported, not swallowed.
-    herr_t reset() {
-        herr_t status = 0;
-        if (id_ >= 0) status = closer_(id_);
-        id_ = -1;
-        return status;
-    }
-
-private:
-    hid_t id_;
-    Closer closer_;
-};
-
-// The deepest entry of HDF5's error stack says why (e.g. "truncated file").
-herr_t keep_deepest(unsigned n, const H5E_error2_t* err, void* data) {
-    auto* deepest = static_cast<std::pair<unsigned, std::string>*>(data);
-    if (err->desc && (deepest->second.empty() || n >= deepest->first)) *deepest = {n, err->desc};
-    return 0;
-}
-
-std::string hdf5_error_reason() {
-    std::pair<unsigned, std::string> deepest{0, {}};
-    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, keep_deepest, &deepest);
-    H5Eclear2(H5E_DEFAULT);
-    return deepest.second;
-}
-
-// HDF5 prints its error stack by default; the exception carries the reason instead.
-class QuietHdf5Errors {
-public:
-    QuietHdf5Errors() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        H5Eclear2(H5E_DEFAULT);  // so a failure reports its own reason, not an older one
-    }
-    ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-    QuietHdf5Errors(const QuietHdf5Errors&) = delete;
-    QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
-
-// File (little-endian, fixed) and memory types of the values we store.
-template <typename T>
-struct H5Of;
-template <>
-struct H5Of<double> {
-    static hid_t file() { return H5T_IEEE_F64LE; }
-    static hid_t memory() { return H5T_NATIVE_DOUBLE; }
-    static constexpr H5T_class_t type_class = H5T_FLOAT;
-    static constexpr const char* name = "64-bit float";
-};
-template <>
-struct H5Of<int> {
-    static hid_t file() { return H5T_STD_I32LE; }
-    static hid_t memory() { return H5T_NATIVE_INT; }
-    static constexpr H5T_class_t type_class = H5T_INTEGER;
-    static constexpr const char* name = "32-bit integer";
-};
-template <>
-struct H5Of<long long> {
-    static hid_t file() { return H5T_STD_I64LE; }
-    static hid_t memory() { return H5T_NATIVE_LLONG; }
-    static constexpr H5T_class_t type_class = H5T_INTEGER;
-    static constexpr const char* name = "64-bit integer";
-};
+using hdf5::H5Of;
+using hdf5::Hid;
 
 // Names the checkpoint in every message.
-class Context {
+class Context : public hdf5::Context {
 public:
-    explicit Context(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& what) const {
-        const std::string reason = hdf5_error_reason();
-        throw std::runtime_error("MPM checkpoint " + file_ + ": " + what +
-                                 (reason.empty() ? "" : " (" + reason + ")"));
-    }
-    Hid make(hid_t id, Hid::Closer closer, const std::string& what) const {
-        if (id < 0) fail(what);
-        return Hid(id, closer);
-    }
-    void check(herr_t status, const std::string& what) const {
-        if (status < 0) fail(what);
-    }
-
-private:
-    std::string file_;
+    explicit Context(const std::string& file) : hdf5::Context("MPM checkpoint " + file) {}
 };
 
 // ---- writing ---------------------------------------------------------------------------
@@ -131,60 +40,22 @@ private:
 template <typename T>
 Hid write_array(const Context& c, hid_t group, const std::string& name,
                 const std::vector<T>& values) {
-    const std::string path = "/particles/" + name;
-    const hsize_t n = values.size();
-    Hid space = c.make(H5Screate_simple(1, &n, nullptr), H5Sclose,
-                       "cannot create dataspace for " + path);
-    Hid dcpl = c.make(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "cannot create property list");
-    if (n > 0) {
-        // Fletcher32 checksums the raw data, so a corrupted checkpoint fails to read
-        // instead of restarting from wrong values (metadata has its own checksums).
-        const hsize_t chunk = std::min(n, kChunkValues);
-        c.check(H5Pset_chunk(dcpl.get(), 1, &chunk), "cannot set chunking of " + path);
-        c.check(H5Pset_fletcher32(dcpl.get()), "cannot set checksum of " + path);
-    }
-    Hid set = c.make(H5Dcreate2(group, name.c_str(), H5Of<T>::file(), space.get(), H5P_DEFAULT,
-                                dcpl.get(), H5P_DEFAULT),
-                     H5Dclose, "cannot create dataset " + path);
-    // HDF5 rejects a null buffer even for zero elements.
-    if (n > 0)
-        c.check(H5Dwrite(set.get(), H5Of<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                         values.data()),
-                "cannot write dataset " + path);
-    return set;
+    // Fletcher32 checksums the raw data, so a corrupted checkpoint fails to read instead of
+    // restarting from wrong values (metadata has its own checksums).
+    return hdf5::write_dataset(c, group, name, "/particles/" + name, values.data(), values.size(),
+                             0, H5Of<T>::file(), kChunkValues);
 }
 
 template <typename T>
 void write_attribute(const Context& c, hid_t obj, const std::string& name, T value) {
-    Hid space = c.make(H5Screate(H5S_SCALAR), H5Sclose, "cannot create dataspace");
-    Hid attr = c.make(H5Acreate2(obj, name.c_str(), H5Of<T>::file(), space.get(), H5P_DEFAULT,
-                                 H5P_DEFAULT),
-                      H5Aclose, "cannot create attribute " + name);
-    c.check(H5Awrite(attr.get(), H5Of<T>::memory(), &value), "cannot write attribute " + name);
+    hdf5::write_scalar_attribute(c, obj, name, value, H5Of<T>::file());
 }
 
 // Fixed-length, null-padded UTF-8 strings: they live in the (checksummed) object header,
 // unlike variable-length strings on the global heap.
 void write_string_attribute(const Context& c, hid_t obj, const std::string& name,
                             const std::vector<std::string>& values, bool scalar) {
-    std::size_t width = 1;
-    for (const auto& v : values) width = std::max(width, v.size());
-    Hid type = c.make(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create string type");
-    c.check(H5Tset_size(type.get(), width), "cannot size string type");
-    c.check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "cannot set string padding");
-    c.check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "cannot set string charset");
-    const hsize_t n = values.size();
-    Hid space = c.make(scalar ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr),
-                       H5Sclose, "cannot create dataspace for attribute " + name);
-    Hid attr = c.make(
-        H5Acreate2(obj, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-        H5Aclose, "cannot create attribute " + name);
-    std::vector<char> buffer(values.size() * width, '\0');
-    for (std::size_t k = 0; k < values.size(); ++k)
-        std::copy(values[k].begin(), values[k].end(),
-                  buffer.begin() + static_cast<std::ptrdiff_t>(k * width));
-    if (!values.empty())
-        c.check(H5Awrite(attr.get(), type.get(), buffer.data()), "cannot write attribute " + name);
+    hdf5::write_string_attribute(c, obj, name, values, scalar, hdf5::StringStorage::FixedNullPadded);
 }
 
 template <int D>
@@ -229,8 +100,7 @@ void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>&
     write_attribute(c, h5.get(), "step", static_cast<long long>(step));
     write_string_attribute(c, h5.get(), "fingerprint", {fingerprint}, true);
 
-    Hid group = c.make(H5Gcreate2(h5.get(), "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                       H5Gclose, "cannot create group /particles");
+    Hid group = hdf5::create_group(c, h5.get(), "particles", "/particles");
     const hid_t g = group.get();
     write_array(c, g, "x", p.x);
     write_array(c, g, "v", p.v);
@@ -256,21 +126,12 @@ void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>&
         values.push_back(value);
     }
     {
-        const hsize_t n = values.size();
-        Hid space = c.make(H5Screate_simple(1, &n, nullptr), H5Sclose,
-                           "cannot create dataspace for /scalars");
-        Hid set = c.make(H5Dcreate2(h5.get(), "scalars", H5Of<double>::file(), space.get(),
-                                    H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                         H5Dclose, "cannot create dataset /scalars");
-        if (n > 0)
-            c.check(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                             values.data()),
-                    "cannot write dataset /scalars");
+        Hid set = hdf5::write_dataset(c, h5.get(), "scalars", "/scalars", values.data(),
+                                    values.size(), 0, H5Of<double>::file());
         write_string_attribute(c, set.get(), "names", names, false);
     }
 
-    c.check(H5Fflush(h5.get(), H5F_SCOPE_LOCAL), "cannot flush");
-    c.check(h5.reset(), "cannot close");
+    hdf5::flush_and_close(c, h5);
 }
 
 // Data must be on disk before the rename makes it the checkpoint; best effort on the
@@ -482,7 +343,7 @@ template <int D>
 void write_checkpoint(const fs::path& file, const mpm::Particles<D>& p, double time, long step,
                       const std::vector<std::pair<std::string, double>>& scalars,
                       const std::string& case_fingerprint) {
-    const QuietHdf5Errors quiet;
+    const hdf5::QuietErrors quiet;
     const Context c(file.string());
     validate(c, p);  // before any file is touched
     fs::path tmp = file;
@@ -509,7 +370,7 @@ void write_checkpoint(const fs::path& file, const mpm::Particles<D>& p, double t
 
 template <int D>
 CheckpointInfo read_checkpoint(const fs::path& file, mpm::Particles<D>& p) {
-    const QuietHdf5Errors quiet;
+    const hdf5::QuietErrors quiet;
     const Context c(file.string());
     return read_file(c, file, p);
 }

@@ -14,14 +14,12 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
 
+#include "io/pvd_collection.hpp"
 #include "mpm/voigt.hpp"
 
 namespace pilempm::io {
@@ -50,27 +48,6 @@ vtkNew<vtkDoubleArray> make_array(const char* name, int components, vtkIdType tu
     a->SetNumberOfComponents(components);
     a->SetNumberOfTuples(tuples);
     return a;
-}
-
-// Shortest text that reads back as the same double: the .pvd times must match write().
-std::string format_double(double v) {
-    char buf[64];
-    auto res = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, res.ptr);
-}
-
-std::string xml_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
 }
 
 template <int D>
@@ -105,22 +82,13 @@ double von_mises_stress(const double* s) {
 
 template <int D>
 struct ParticleVtkSeries<D>::Impl {
-    struct Step {
-        double time;
-        std::string file;  // relative to dir, as the .pvd lists it
-    };
+    explicit Impl(PvdCollection collection) : pvd(std::move(collection)) {}
 
-    fs::path dir;
-    std::string basename;
+    PvdCollection pvd;
     std::vector<std::string> state_names;
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
 
-    std::vector<Step> steps;
-    std::size_t steps_in_pvd = 0;
-    bool pvd_written = false;
-
     std::vector<std::string> state_array_names(int stride) const;
-    void write_pvd() const;
 };
 
 template <int D>
@@ -141,42 +109,10 @@ std::vector<std::string> ParticleVtkSeries<D>::Impl::state_array_names(int strid
 }
 
 template <int D>
-void ParticleVtkSeries<D>::Impl::write_pvd() const {
-    const fs::path pvd = dir / (basename + ".pvd");
-    const fs::path tmp = dir / (basename + ".pvd.tmp");
-    {
-        std::ofstream out(tmp, std::ios::trunc);
-        out << "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "  <Collection>\n";
-        for (const Step& s : steps)
-            out << "    <DataSet timestep=\"" << format_double(s.time)
-                << "\" group=\"\" part=\"0\" file=\"" << xml_escape(s.file) << "\"/>\n";
-        out << "  </Collection>\n</VTKFile>\n";
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw std::runtime_error("ParticleVtkSeries: cannot write " + tmp.string());
-        }
-    }
-    // Rename so a reader never sees a half-written collection.
-    std::error_code ec;
-    fs::rename(tmp, pvd, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw std::runtime_error("ParticleVtkSeries: cannot write " + pvd.string() + ": " +
-                                 ec.message());
-    }
-}
-
-template <int D>
 ParticleVtkSeries<D>::ParticleVtkSeries(fs::path dir, std::string basename,
                                         std::vector<std::string> state_names)
-    : impl_(std::make_unique<Impl>()) {
-    if (basename.empty() || basename.find_first_of("/\\") != std::string::npos)
-        throw std::invalid_argument("ParticleVtkSeries: basename must be a plain file name");
+    : impl_(std::make_unique<Impl>(
+          PvdCollection("ParticleVtkSeries", std::move(dir), std::move(basename)))) {
     for (std::size_t k = 0; k < state_names.size(); ++k) {
         const std::string& name = state_names[k];
         if (name.empty()) continue;  // falls back to "state_<k>"
@@ -186,8 +122,6 @@ ParticleVtkSeries<D>::ParticleVtkSeries(fs::path dir, std::string basename,
             throw std::invalid_argument("ParticleVtkSeries: state name \"" + name +
                                         "\" repeats or collides with a fixed array");
     }
-    impl_->dir = std::move(dir);
-    impl_->basename = std::move(basename);
     impl_->state_names = std::move(state_names);
 
     vtkXMLUnstructuredGridWriter& w = *impl_->writer;
@@ -196,11 +130,7 @@ ParticleVtkSeries<D>::ParticleVtkSeries(fs::path dir, std::string basename,
     w.SetCompressorTypeToZLib();
     w.SetHeaderTypeToUInt64();  // > 4 GiB of appended data is possible with many points
 
-    std::error_code ec;
-    fs::create_directories(impl_->dir, ec);
-    if (ec)
-        throw std::runtime_error("ParticleVtkSeries: cannot create " + impl_->dir.string() +
-                                 ": " + ec.message());
+    impl_->pvd.create_directory();
 }
 
 template <int D>
@@ -304,11 +234,9 @@ void ParticleVtkSeries<D>::write(double time, const mpm::Particles<D>& p) {
     time_value->SetValue(0, time);
     grid->GetFieldData()->AddArray(time_value);
 
-    char name[32];
-    std::snprintf(name, sizeof name, "_%06zu.vtu", m.steps.size());
-    const std::string file = m.basename + name;
-    const fs::path path = m.dir / file;
-    const fs::path tmp = m.dir / (file + ".tmp");
+    const std::string file = m.pvd.next_step_file();
+    const fs::path path = m.pvd.dir() / file;
+    const fs::path tmp = m.pvd.dir() / (file + ".tmp");
     m.writer->SetInputData(grid);
     m.writer->SetFileName(tmp.c_str());
     const bool ok = m.writer->Write() == 1 && m.writer->GetErrorCode() == 0;
@@ -321,26 +249,22 @@ void ParticleVtkSeries<D>::write(double time, const mpm::Particles<D>& p) {
         throw std::runtime_error("ParticleVtkSeries: cannot write " + path.string() +
                                  (ec ? ": " + ec.message() : std::string{}));
     }
-    m.steps.push_back({time, file});
+    m.pvd.add(time, file);
 }
 
 template <int D>
 void ParticleVtkSeries<D>::finish() {
-    if (!impl_) return;  // moved-from
-    if (impl_->pvd_written && impl_->steps_in_pvd == impl_->steps.size()) return;
-    impl_->write_pvd();
-    impl_->pvd_written = true;
-    impl_->steps_in_pvd = impl_->steps.size();
+    if (impl_) impl_->pvd.finish();  // nothing to do when moved-from
 }
 
 template <int D>
 std::size_t ParticleVtkSeries<D>::steps_written() const {
-    return impl_ ? impl_->steps.size() : 0;
+    return impl_ ? impl_->pvd.size() : 0;
 }
 
 template <int D>
 fs::path ParticleVtkSeries<D>::pvd_path() const {
-    return impl_ ? impl_->dir / (impl_->basename + ".pvd") : fs::path{};
+    return impl_ ? impl_->pvd.pvd_path() : fs::path{};
 }
 
 template class ParticleVtkSeries<2>;

@@ -10,13 +10,11 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <stdexcept>
-#include <system_error>
 #include <utility>
+
+#include "io/pvd_collection.hpp"
 
 namespace pilempm::io {
 
@@ -46,37 +44,12 @@ vtkNew<vtkDoubleArray>& init_array(vtkNew<vtkDoubleArray>& a, const char* name, 
     return a;
 }
 
-// Shortest text that reads back as the same double: the .pvd times must match write().
-std::string format_double(double v) {
-    char buf[64];
-    auto res = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, res.ptr);
-}
-
-std::string xml_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
-
 }  // namespace
 
 struct PileVtkSeries::Impl {
-    struct Step {
-        double time;
-        std::string file;  // relative to dir, as the .pvd lists it
-    };
+    explicit Impl(PvdCollection collection) : pvd(std::move(collection)) {}
 
-    fs::path dir;
-    std::string basename;
+    PvdCollection pvd;
     int dim = 1;
     vtkIdType num_nodes = 0;
     std::size_t num_dofs = 0;
@@ -86,12 +59,7 @@ struct PileVtkSeries::Impl {
     vtkNew<vtkDoubleArray> displacement, velocity, stress, time_value;
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
 
-    std::vector<Step> steps;
-    std::size_t steps_in_pvd = 0;
-    bool pvd_written = false;
-
     void build_geometry(const fem::PileMesh& mesh);
-    void write_pvd() const;
 };
 
 void PileVtkSeries::Impl::build_geometry(const fem::PileMesh& mesh) {
@@ -149,39 +117,11 @@ void PileVtkSeries::Impl::build_geometry(const fem::PileMesh& mesh) {
     writer->SetHeaderTypeToUInt64();
 }
 
-void PileVtkSeries::Impl::write_pvd() const {
-    const fs::path pvd = dir / (basename + ".pvd");
-    const fs::path tmp = dir / (basename + ".pvd.tmp");
-    {
-        std::ofstream out(tmp, std::ios::trunc);
-        out << "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "  <Collection>\n";
-        for (const Step& s : steps)
-            out << "    <DataSet timestep=\"" << format_double(s.time)
-                << "\" group=\"\" part=\"0\" file=\"" << xml_escape(s.file) << "\"/>\n";
-        out << "  </Collection>\n</VTKFile>\n";
-        out.close();
-        if (!out) throw std::runtime_error("PileVtkSeries: cannot write " + tmp.string());
-    }
-    // Rename so a reader never sees a half-written collection.
-    std::error_code ec;
-    fs::rename(tmp, pvd, ec);
-    if (ec) throw std::runtime_error("PileVtkSeries: cannot write " + pvd.string() + ": " +
-                                     ec.message());
-}
-
 PileVtkSeries::PileVtkSeries(fs::path dir, const fem::PileMesh& mesh, std::string basename)
-    : impl_(std::make_unique<Impl>()) {
-    if (basename.empty() || basename.find_first_of("/\\") != std::string::npos)
-        throw std::invalid_argument("PileVtkSeries: basename must be a plain file name");
-    impl_->dir = std::move(dir);
-    impl_->basename = std::move(basename);
+    : impl_(std::make_unique<Impl>(
+          PvdCollection("PileVtkSeries", std::move(dir), std::move(basename)))) {
     impl_->build_geometry(mesh);
-    std::error_code ec;
-    fs::create_directories(impl_->dir, ec);
-    if (ec) throw std::runtime_error("PileVtkSeries: cannot create " + impl_->dir.string() +
-                                     ": " + ec.message());
+    impl_->pvd.create_directory();
 }
 
 PileVtkSeries::~PileVtkSeries() {
@@ -225,28 +165,22 @@ void PileVtkSeries::write(double time, const std::vector<double>& displacement,
     m.time_value->Modified();
     m.grid->Modified();
 
-    char name[32];
-    std::snprintf(name, sizeof name, "_%06zu.vtu", m.steps.size());
-    const std::string file = m.basename + name;
-    const fs::path path = m.dir / file;
+    const std::string file = m.pvd.next_step_file();
+    const fs::path path = m.pvd.dir() / file;
     m.writer->SetFileName(path.c_str());
     if (m.writer->Write() != 1 || m.writer->GetErrorCode() != 0)
         throw std::runtime_error("PileVtkSeries: cannot write " + path.string());
-    m.steps.push_back({time, file});
+    m.pvd.add(time, file);
 }
 
 void PileVtkSeries::finish() {
-    if (!impl_) return;  // moved-from
-    if (impl_->pvd_written && impl_->steps_in_pvd == impl_->steps.size()) return;
-    impl_->write_pvd();
-    impl_->pvd_written = true;
-    impl_->steps_in_pvd = impl_->steps.size();
+    if (impl_) impl_->pvd.finish();  // nothing to do when moved-from
 }
 
-std::size_t PileVtkSeries::steps_written() const { return impl_ ? impl_->steps.size() : 0; }
+std::size_t PileVtkSeries::steps_written() const { return impl_ ? impl_->pvd.size() : 0; }
 
 fs::path PileVtkSeries::pvd_path() const {
-    return impl_ ? impl_->dir / (impl_->basename + ".pvd") : fs::path{};
+    return impl_ ? impl_->pvd.pvd_path() : fs::path{};
 }
 
 }  // namespace pilempm::io
