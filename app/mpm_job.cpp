@@ -236,9 +236,12 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     }
     mpm::MpmSolver<D> solver(m);
     solver.set_time(resumed_time, resumed_steps);
+    // State arrays are named after the material that has the most of them.
+    const mpm::ConstitutiveModel* named = m.materials.front().get();
+    for (const auto& mat : m.materials)
+        if (mat->num_state() > named->num_state()) named = mat.get();
     std::vector<std::string> state_names;
-    for (int k = 0; k < m.particles.state_stride; ++k)
-        state_names.push_back(m.materials.empty() ? "" : m.materials.back()->state_name(k));
+    for (int k = 0; k < m.particles.state_stride; ++k) state_names.push_back(named->state_name(k));
     fs::create_directories(staged.path() / "vtk");
     io::ParticleVtkSeries<D> vtk(staged.path() / "vtk", "particles", state_names);
 

@@ -17,6 +17,10 @@ ExplicitPile::ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSu
     fixed_.assign(n, 0);
     if (mesh_.head_nodes.empty() || mesh_.toe_nodes.empty())
         throw std::invalid_argument("pile mesh lacks head or toe nodes");
+    // compute_internal_force gathers each element into a fixed 32-value buffer.
+    for (const auto& b : mesh_.blocks)
+        if (b.nodes_per_element * mesh_.dofs_per_node() > 32)
+            throw std::invalid_argument("element with more than 32 DOFs");
     for (int node : mesh_.head_nodes) {
         head_dofs_.push_back(mesh_.axial_dof(node));
         head_mass_ += ops_.lumped_mass[mesh_.axial_dof(node)];
