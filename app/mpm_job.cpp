@@ -198,6 +198,7 @@ MpmRun<D> run_quietly(const io::MpmCase& c) {
     for (const auto& st : c.stages) {
         if (!st.quasi_static) throw std::invalid_argument("stress_noise reruns quasi-static stages only");
         run.model.local_damping = st.local_damping;
+        run.model.flip = 1.0;  // as in the job's quasi-static stages
         for (long n = 0; n < st.max_steps; ++n) {
             apply_loads(run, 0.0, true);
             solver.step(solver.stable_time_step());
@@ -294,8 +295,12 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         TerminalProgress progress("mpm stage '" + st.name + "'", !quiet);
         m.local_damping = st.local_damping;
         if (st.quasi_static) {
-            // Pseudo-time: the clock stands still, held loads only, until equilibrium.
+            // Pseudo-time: the clock stands still, held loads only, until equilibrium. The
+            // local damping is the dissipation: PIC's velocity projection would fight it (pure
+            // PIC never settles), so the stage runs pure FLIP.
             const double t_keep = solver.time();
+            const double flip_keep = m.flip;
+            m.flip = 1.0;
             long n = 0;
             for (; n < st.max_steps; ++n) {
                 apply_loads(run, 0.0, true);
@@ -308,6 +313,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                 progress.update_count(n, st.max_steps, "steps (quasi-static)");
             }
             progress.done();
+            m.flip = flip_keep;
             std::fill(m.particles.v.begin(), m.particles.v.end(), 0.0);  // a nil step: start at rest
             solver.set_time(t_keep, solver.steps());
             if (!quiet)
