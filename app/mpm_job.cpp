@@ -358,6 +358,16 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         .add("material_points", static_cast<double>(m.particles.size()))
         .add("grid_nodes", static_cast<double>(m.grid.num_nodes())).add("steps", static_cast<double>(solver.steps()))
         .add("simulated_time_s", solver.time());
+    {
+        // Where the material ended up: run-out, heave and settlement read off the extent.
+        std::vector<double> lo(D, 1e300), hi(D, -1e300);
+        for (std::size_t i = 0; i < m.particles.size(); ++i)
+            for (int d = 0; d < D; ++d) {
+                lo[d] = std::min(lo[d], m.particles.x[D * i + d]);
+                hi[d] = std::max(hi[d], m.particles.x[D * i + d]);
+            }
+        summary.add("extent_min_m", lo).add("extent_max_m", hi);
+    }
     if (!c.verification_checks.empty()) {
         auto checks = run_mpm_verification<D>(c, m, run.x0, history);
         if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "stress_noise") !=
