@@ -24,6 +24,7 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
         points_of_material_[mat].push_back(static_cast<int>(p));
     }
     stencil_.resize(m_.particles.size());
+    mass_ = total_mass();  // points keep their mass: the grid's "empty node" threshold is fixed
 }
 
 template <int D>
@@ -162,7 +163,7 @@ template <int D>
 void MpmSolver<D>::update_grid(double dt) {
     auto& g = m_.grid;
     const int nn = g.num_nodes();
-    const double tiny = 1e-12 * (total_mass() / std::max(1, nn));
+    const double tiny = 1e-12 * (mass_ / std::max(1, nn));
     double unbalanced = 0.0, applied = 0.0;
     for (int n = 0; n < nn; ++n) {
         const double mass = g.mass[n];
@@ -232,7 +233,7 @@ void MpmSolver<D>::map_momentum_back() {
             for (int d = 0; d < D; ++d) buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * p.v[D * i + d];
     }, scratch_);
     const int nn = g.num_nodes();
-    const double tiny = 1e-12 * (total_mass() / std::max(1, nn));
+    const double tiny = 1e-12 * (mass_ / std::max(1, nn));
     for (int n = 0; n < nn; ++n)
         for (int d = 0; d < D; ++d) {
             const int k = D * n + d;

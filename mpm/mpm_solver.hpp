@@ -76,6 +76,7 @@ private:
     std::vector<double> scratch_;
     std::vector<double> external_;  // D per node: gravity and tractions, for the equilibrium measure
     double time_ = 0.0;
+    double mass_ = 0.0;
     long steps_ = 0;
     double unbalanced_ratio_ = 0.0;
     double absorbed_ = 0.0;
