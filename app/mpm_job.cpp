@@ -115,7 +115,7 @@ MpmRun<D> build(const io::MpmCase& c) {
         const double G = mat.youngs_modulus / (2 * (1 + mat.poisson_ratio));
         const double M = G * 2 * (1 - mat.poisson_ratio) / (1 - 2 * mat.poisson_ratio);
         mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, mat.density, std::sqrt(M / mat.density),
-                               std::sqrt(G / mat.density), c.axisymmetric);
+                               std::sqrt(G / mat.density), c.axisymmetric, b.friction);
     }
     auto& p = m.particles;
     for (const auto& pr : c.pressures)

@@ -32,6 +32,7 @@ struct MpmRegionInput {
 struct MpmBoundaryInput {
     int axis = 0, side = 0;
     mpm::BoundaryKind kind = mpm::BoundaryKind::Fixed;
+    double friction = 0.0;  // Coulomb coefficient of a frictional wall
 };
 
 struct MpmPressureInput {  // on the points in a box: force = -pressure n x face area

@@ -151,8 +151,13 @@ MpmCase read_mpm_case(const std::string& file) {
         for (auto m : root.maps("boundaries")) {
             MpmBoundaryInput b;
             std::tie(b.axis, b.side) = plane(m, "plane", c.dimension);
-            const std::string t = m.choice("type", {"fixed", "roller", "absorbing"});
-            b.kind = t == "fixed" ? mpm::BoundaryKind::Fixed : t == "roller" ? mpm::BoundaryKind::Roller : mpm::BoundaryKind::Absorbing;
+            const std::string t = m.choice("type", {"fixed", "roller", "absorbing", "frictional"});
+            b.kind = t == "fixed"        ? mpm::BoundaryKind::Fixed
+                     : t == "roller"     ? mpm::BoundaryKind::Roller
+                     : t == "absorbing"  ? mpm::BoundaryKind::Absorbing
+                                         : mpm::BoundaryKind::Frictional;
+            if (b.kind == mpm::BoundaryKind::Frictional)
+                b.friction = m.number("friction", non_negative("Coulomb friction coefficient"));
             m.finish();
             c.boundaries.push_back(b);
         }

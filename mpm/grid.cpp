@@ -16,6 +16,8 @@ void Grid<D>::allocate() {
     prescribed.assign(D * n, 0.0);
     reaction.assign(D * n, 0.0);
     dashpot.assign(D * n, 0.0);
+    wall.assign(n, -1);
+    wall_friction.assign(n, 0.0);
 }
 
 template <int D>

@@ -43,7 +43,7 @@ int fill_region(const Grid<D>& g, Particles<D>& p, const std::function<bool(cons
 
 template <int D>
 void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double density, double cp, double cs,
-                    bool axisymmetric) {
+                    bool axisymmetric, double friction) {
     const int nn = g.num_nodes();
     const int plane = side == 0 ? 0 : g.cells[axis];
     for (int n = 0; n < nn; ++n) {
@@ -53,6 +53,9 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
             for (int d = 0; d < D; ++d) g.fixed[D * n + d] = 1;
         } else if (kind == BoundaryKind::Roller) {
             g.fixed[D * n + axis] = 1;
+        } else if (kind == BoundaryKind::Frictional) {
+            g.wall[n] = 2 * axis + side;
+            g.wall_friction[n] = friction;
         } else {
             // Tributary face area of the node: half a cell at the ends of each edge.
             double area = 1.0;
@@ -88,8 +91,8 @@ void apply_k0_stress(Particles<D>& p, double surface, double gravity, const std:
 
 template int fill_region<2>(const Grid<2>&, Particles<2>&, const std::function<bool(const double*)>&, int, double, int, bool);
 template int fill_region<3>(const Grid<3>&, Particles<3>&, const std::function<bool(const double*)>&, int, double, int, bool);
-template void apply_boundary<2>(Grid<2>&, int, int, BoundaryKind, double, double, double, bool);
-template void apply_boundary<3>(Grid<3>&, int, int, BoundaryKind, double, double, double, bool);
+template void apply_boundary<2>(Grid<2>&, int, int, BoundaryKind, double, double, double, bool, double);
+template void apply_boundary<3>(Grid<3>&, int, int, BoundaryKind, double, double, double, bool, double);
 template void apply_k0_stress<2>(Particles<2>&, double, double, const std::function<double(double)>&,
                                  const std::function<double(double)>&);
 template void apply_k0_stress<3>(Particles<3>&, double, double, const std::function<double(double)>&,

@@ -15,15 +15,17 @@ template <int D>
 int fill_region(const Grid<D>& grid, Particles<D>& p, const std::function<bool(const double*)>& inside,
                 int per_cell, double density, int material, bool axisymmetric);
 
-enum class BoundaryKind { Fixed, Roller, Absorbing };
+enum class BoundaryKind { Fixed, Roller, Absorbing, Frictional };
 
 // A boundary on the grid plane x_axis = min (side 0) or max (side 1). Fixed: all velocity
 // components held; roller: the normal one. Absorbing (Lysmer-Kuhlemeyer): dashpots
 // rho c_p on the normal and rho c_s on the tangential components, over each node's
-// tributary face area (x r in axisymmetry).
+// tributary face area (x r in axisymmetry). Frictional: a rigid wall the material cannot
+// enter and slides on with Coulomb friction `friction` (it may lift off).
 template <int D>
 void apply_boundary(Grid<D>& grid, int axis, int side, BoundaryKind kind, double density = 0.0,
-                    double p_wave_speed = 0.0, double shear_wave_speed = 0.0, bool axisymmetric = false);
+                    double p_wave_speed = 0.0, double shear_wave_speed = 0.0, bool axisymmetric = false,
+                    double friction = 0.0);
 
 // K0 stress of horizontally layered ground whose surface is at elevation `surface`
 // (vertical axis D-1): sigma_v = -g int rho dz from the surface down, sigma_h = K0 sigma_v,

@@ -27,6 +27,28 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
     mass_ = total_mass();  // points keep their mass: the grid's "empty node" threshold is fixed
 }
 
+namespace {
+
+// Coulomb wall on node velocity v (D values): if v moves into the wall, the normal part is
+// stopped and the tangential part loses at most friction x that normal change.
+template <int D>
+void apply_wall(int wall, double friction, double* v) {
+    const int axis = wall / 2;
+    const bool min_side = wall % 2 == 0;  // the wall lies below (x_axis = min): v_axis >= 0
+    const double vn = v[axis];
+    if (min_side ? vn >= 0.0 : vn <= 0.0) return;  // separating: free
+    v[axis] = 0.0;
+    double vt2 = 0.0;
+    for (int d = 0; d < D; ++d)
+        if (d != axis) vt2 += v[d] * v[d];
+    const double vt = std::sqrt(vt2), cap = friction * std::abs(vn);
+    const double keep = vt > cap ? 1.0 - cap / vt : 0.0;  // slip, or stick
+    for (int d = 0; d < D; ++d)
+        if (d != axis) v[d] *= keep;
+}
+
+}  // namespace
+
 template <int D>
 double MpmSolver<D>::stable_time_step() const {
     const auto& p = m_.particles;
@@ -165,6 +187,7 @@ void MpmSolver<D>::update_grid(double dt) {
     const int nn = g.num_nodes();
     const double tiny = 1e-12 * (mass_ / std::max(1, nn));
     double unbalanced = 0.0, applied = 0.0;
+    residual_.assign(D * nn, 0.0);
     for (int n = 0; n < nn; ++n) {
         const double mass = g.mass[n];
         for (int d = 0; d < D; ++d) {
@@ -183,7 +206,7 @@ void MpmSolver<D>::update_grid(double dt) {
                 g.acceleration[k] = (g.prescribed[k] - v0) / dt;
                 continue;
             }
-            unbalanced += f * f;
+            residual_[k] = f;  // what equilibrium must bring to zero (walls add their reaction)
             applied += external_[k] * external_[k];
             // Cundall's local damping: a force against the motion, in proportion to the
             // unbalanced force, so equilibrium is reached without a global viscosity.
@@ -197,6 +220,22 @@ void MpmSolver<D>::update_grid(double dt) {
             g.acceleration[k] = (v1 - v0) / dt;
         }
     }
+    for (int n = 0; n < nn; ++n) {
+        if (g.wall[n] < 0 || g.mass[n] <= tiny) continue;
+        double v[D];
+        for (int d = 0; d < D; ++d) v[d] = g.velocity[D * n + d];
+        apply_wall<D>(g.wall[n], g.wall_friction[n], v);
+        for (int d = 0; d < D; ++d) {
+            const int k = D * n + d;
+            const double push = g.mass[n] * (v[d] - g.velocity[k]) / dt;  // the wall's push and friction
+            g.reaction[k] += push;
+            residual_[k] += push;
+            g.acceleration[k] += (v[d] - g.velocity[k]) / dt;
+            g.velocity[k] = v[d];
+        }
+    }
+    for (int k = 0; k < D * nn; ++k)
+        if (!g.fixed[k] && g.mass[k / D] > tiny) unbalanced += residual_[k] * residual_[k];
     unbalanced_ratio_ = applied > 0.0 ? std::sqrt(unbalanced / applied) : 0.0;
 }
 
@@ -239,6 +278,13 @@ void MpmSolver<D>::map_momentum_back() {
             const int k = D * n + d;
             g.velocity[k] = g.fixed[k] ? g.prescribed[k] : (g.mass[n] > tiny ? scratch_[k] / g.mass[n] : 0.0);
         }
+    // The remapped velocities may not enter a wall either (friction was applied above).
+    for (int n = 0; n < nn; ++n) {
+        if (g.wall[n] < 0) continue;
+        const int axis = g.wall[n] / 2;
+        double& vn = g.velocity[D * n + axis];
+        if (g.wall[n] % 2 == 0 ? vn < 0.0 : vn > 0.0) vn = 0.0;
+    }
 }
 
 template <int D>

@@ -74,7 +74,8 @@ private:
     std::vector<std::vector<int>> points_of_material_;
     std::vector<std::vector<double>> thread_buffer_;
     std::vector<double> scratch_;
-    std::vector<double> external_;  // D per node: gravity and tractions, for the equilibrium measure
+    std::vector<double> external_;
+    std::vector<double> residual_;  // D per node: unbalanced force after the walls' reaction  // D per node: gravity and tractions, for the equilibrium measure
     double time_ = 0.0;
     double mass_ = 0.0;
     long steps_ = 0;
