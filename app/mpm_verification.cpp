@@ -119,7 +119,7 @@ VerificationCheck absorbed(const Table& history) {
 // Strip footing on Tresca soil: the largest footing pressure (reaction of the pushed nodes,
 // a half model: x2, over the footing width) against Prandtl's (2 + pi) c.
 VerificationCheck footing(const io::MpmCase& c, const Table& history, int D) {
-    const double width = parameter(c, "column_width", "footing_collapse");  // full footing width B
+    const double width = parameter(c, "footing_width", "footing_collapse");  // full width B
     const double cohesion = parameter(c, "reference", "footing_collapse");
     const auto& r = column(history, D == 2 ? "reaction_y_N" : "reaction_z_N");
     double peak = 0.0;

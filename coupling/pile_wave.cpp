@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <optional>
 #include <stdexcept>
 
 #include "coupling/blow_stepper.hpp"

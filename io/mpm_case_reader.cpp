@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse", "column_runout",
+                                          "absorbed_energy", "footing_collapse",
                                           "stress_noise", "k0_ratio"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
@@ -211,8 +211,8 @@ MpmCase read_mpm_case(const std::string& file) {
     }
     if (auto v = root.optional_map("verification")) {
         c.verification_checks = v->words("checks", kChecks);
-        for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth", "wave_speed",
-                                "column_height", "column_width", "reference"})
+        for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
+                                "footing_width", "reference"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         v->finish();
     }
