@@ -90,6 +90,7 @@ MpmRun<D> build(const io::MpmCase& c) {
     m.axisymmetric = c.axisymmetric;
     m.gravity[D - 1] = -c.gravity;
     m.flip = c.flip;
+    m.apic = c.apic;
     m.cfl = c.cfl;
     int stride = 0;
     for (const auto& mat : c.materials) {
@@ -199,6 +200,7 @@ MpmRun<D> run_quietly(const io::MpmCase& c) {
         if (!st.quasi_static) throw std::invalid_argument("stress_noise reruns quasi-static stages only");
         run.model.local_damping = st.local_damping;
         run.model.flip = 1.0;  // as in the job's quasi-static stages
+        run.model.apic = false;
         for (long n = 0; n < st.max_steps; ++n) {
             apply_loads(run, 0.0, true);
             solver.step(solver.stable_time_step());
@@ -300,7 +302,9 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             // PIC never settles), so the stage runs pure FLIP.
             const double t_keep = solver.time();
             const double flip_keep = m.flip;
+            const bool apic_keep = m.apic;
             m.flip = 1.0;
+            m.apic = false;
             long n = 0;
             for (; n < st.max_steps; ++n) {
                 apply_loads(run, 0.0, true);
@@ -314,7 +318,9 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             }
             progress.done();
             m.flip = flip_keep;
+            m.apic = apic_keep;
             std::fill(m.particles.v.begin(), m.particles.v.end(), 0.0);  // a nil step: start at rest
+            std::fill(m.particles.C.begin(), m.particles.C.end(), 0.0);
             solver.set_time(t_keep, solver.steps());
             if (!quiet)
                 std::printf("stage '%s': %ld steps, unbalanced force ratio %.3g (tolerance %.3g)%s\n", st.name.c_str(),

@@ -66,6 +66,7 @@ struct MpmCase : CaseFile {
     mpm::ShapeKind shape = mpm::ShapeKind::GIMP;
     int per_cell = 2;
     double flip = 0.98, cfl = 0.5;
+    bool apic = false;              // velocity_transfer: apic (else the FLIP/PIC blend)
     std::vector<MpmMaterialInput> materials;
     std::vector<MpmRegionInput> regions;
     std::vector<MpmBoundaryInput> boundaries;

@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse",
+                                          "absorbed_energy", "footing_collapse", "granular_runout",
                                           "stress_noise", "k0_ratio"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
@@ -143,6 +143,12 @@ MpmCase read_mpm_case(const std::string& file) {
     const std::string shape = root.choice_or("shape_function", "gimp", {"linear", "gimp", "cpdi"});
     c.shape = shape == "linear" ? mpm::ShapeKind::Linear : shape == "gimp" ? mpm::ShapeKind::GIMP : mpm::ShapeKind::CPDI;
     c.per_cell = root.integer_or("particles_per_cell", 2, 1);
+    c.apic = root.choice_or("velocity_transfer", "flip_pic", {"flip_pic", "apic"}) == "apic";
+    // C = sum v_i grad N_i jumps across cell faces with linear hats: APIC then blows up.
+    if (c.apic && c.shape == mpm::ShapeKind::Linear)
+        root.fail("velocity_transfer", "apic with shape_function gimp or cpdi (not linear)", "apic");
+    if (c.apic && root.has("flip"))
+        root.fail("flip", "no flip with velocity_transfer: apic (APIC has no FLIP/PIC blend)", "a flip fraction");
     c.flip = root.number_or("flip", 0.98, {"a FLIP fraction from 0 to 1", [](double x) { return x >= 0 && x <= 1; }});
     c.cfl = root.number_or("cfl", 0.5, in_half_open_range(0.0, 1.0, "a Courant number"));
     for (auto m : root.maps("materials")) c.materials.push_back(read_material(std::move(m)));
@@ -212,7 +218,7 @@ MpmCase read_mpm_case(const std::string& file) {
     if (auto v = root.optional_map("verification")) {
         c.verification_checks = v->words("checks", kChecks);
         for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
-                                "footing_width", "reference"})
+                                "footing_width", "reference", "initial_width", "height"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         v->finish();
     }

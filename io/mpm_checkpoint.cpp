@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFormat = "pilempm-mpm-checkpoint";
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;  // 2: the affine velocity field C
 // Datasets are chunked (Fletcher32 needs chunks; a chunk must stay below 4 GiB).
 constexpr hsize_t kChunkValues = hsize_t{1} << 20;
 
@@ -72,6 +72,7 @@ void validate(const Context& c, const mpm::Particles<D>& p) {
     need("v", p.v.size(), D);
     need("volume", p.volume.size(), 1);
     need("volume0", p.volume0.size(), 1);
+    need("C", p.C.size(), D * D);
     need("F", p.F.size(), D * D);
     need("domain0", p.domain0.size(), D * D);
     need("stress", p.stress.size(), 6);
@@ -107,6 +108,7 @@ void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>&
     write_array(c, g, "mass", p.mass);
     write_array(c, g, "volume", p.volume);
     write_array(c, g, "volume0", p.volume0);
+    write_array(c, g, "C", p.C);
     write_array(c, g, "F", p.F);
     write_array(c, g, "domain0", p.domain0);
     write_array(c, g, "stress", p.stress);
@@ -300,6 +302,7 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
     q.mass = read_array<double>(c, g, gp, "mass", n, one);
     q.volume = read_array<double>(c, g, gp, "volume", n, one);
     q.volume0 = read_array<double>(c, g, gp, "volume0", n, one);
+    q.C = read_array<double>(c, g, gp, "C", D * D * n, mat);
     q.F = read_array<double>(c, g, gp, "F", D * D * n, mat);
     q.domain0 = read_array<double>(c, g, gp, "domain0", D * D * n, mat);
     q.stress = read_array<double>(c, g, gp, "stress", 6 * n, six);

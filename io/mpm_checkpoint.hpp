@@ -22,7 +22,7 @@ struct CheckpointInfo {
 // File layout (all datasets 1-D, row-major per point, little-endian):
 //  /particles/x, v, external_force         D per point, double
 //  /particles/mass, volume, volume0        1 per point, double
-//  /particles/F, domain0                   D*D per point, double
+//  /particles/C, F, domain0                D*D per point, double
 //  /particles/stress, strain               6 per point, double
 //  /particles/material                     1 per point, int32
 //  /particles/state                        state_stride per point, double; attribute

@@ -27,6 +27,9 @@ struct Grid {
     // the friction coefficient. The material may not move into the wall and slides on it.
     std::vector<int> wall;
     std::vector<double> wall_friction;
+    // Edge planes (axis * 2 + side) the material cannot cross: fixed, roller and frictional
+    // boundaries. A point carried past one by interpolation is put back on the plane.
+    std::array<bool, 2 * D> closed{};
 
     void allocate();
     void reset();

@@ -46,6 +46,7 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
                     bool axisymmetric, double friction) {
     const int nn = g.num_nodes();
     const int plane = side == 0 ? 0 : g.cells[axis];
+    if (kind != BoundaryKind::Absorbing) g.closed[2 * axis + side] = true;
     for (int n = 0; n < nn; ++n) {
         const auto c = g.ijk(n);
         if (c[axis] != plane) continue;

@@ -50,6 +50,12 @@ void apply_wall(int wall, double friction, double* v) {
 }  // namespace
 
 template <int D>
+void MpmSolver<D>::node_offset(const Stencil<D>& s, int k, double* dx) const {
+    const auto ijk = m_.grid.ijk(s.node[k]);
+    for (int d = 0; d < D; ++d) dx[d] = m_.grid.coordinate(d, ijk[d]) - s.x[d];
+}
+
+template <int D>
 double MpmSolver<D>::stable_time_step() const {
     const auto& p = m_.particles;
     double h = m_.grid.spacing[0];
@@ -69,10 +75,12 @@ void MpmSolver<D>::compute_stencils() {
     auto& p = m_.particles;
     const long n = static_cast<long>(p.size());
     int outside = 0;
-#pragma omp parallel for schedule(static) reduction(+ : outside) if (n > kParallelPoints)
+    long first_outside = n;
+#pragma omp parallel for schedule(static) reduction(+ : outside) reduction(min : first_outside) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
         if (!m_.grid.inside(&p.x[D * i])) {  // no throwing inside a parallel region
             ++outside;
+            first_outside = std::min(first_outside, i);
             continue;
         }
         // Half-edge vectors of the domain: undeformed for uGIMP, F-deformed for CPDI.
@@ -89,7 +97,13 @@ void MpmSolver<D>::compute_stencils() {
             }
         evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &p.x[D * i], half, stencil_[i]);
     }
-    if (outside > 0) throw std::runtime_error(std::to_string(outside) + " material point(s) left the grid");
+    if (outside > 0) {
+        std::string where;
+        for (int d = 0; d < D; ++d) where += (d ? ", " : "") + std::to_string(p.x[D * first_outside + d]);
+        throw std::runtime_error(std::to_string(outside) + " material point(s) left the grid, the first (point " +
+                                 std::to_string(first_outside) + ") at (" + where + ") m at t = " +
+                                 std::to_string(time_) + " s");
+    }
 }
 
 // Each thread accumulates into its own copy of `fields` values per node; then they are
@@ -138,12 +152,18 @@ void MpmSolver<D>::particles_to_grid() {
             S[1][2] = S[2][1] = sg[4];
             S[0][2] = S[2][0] = sg[5];
         }
+        const double* C = &p.C[D * D * i];
         for (int k = 0; k < s.count; ++k) {
             double* b = buf + F * s.node[k];
             const double N = s.N[k];
             b[0] += N * mass;
+            double dx[D];
+            node_offset(s, k, dx);
             for (int d = 0; d < D; ++d) {
-                b[1 + d] += N * mass * v[d];
+                double vd = v[d];
+                if (m_.apic)
+                    for (int e = 0; e < D; ++e) vd += C[D * d + e] * dx[e];
+                b[1 + d] += N * mass * vd;
                 const double external = N * (mass * m_.gravity[d] + p.external_force[D * i + d]);
                 double f = external;
                 for (int e = 0; e < D; ++e) f -= vol * S[d][e] * s.dN[k][e];
@@ -254,10 +274,21 @@ void MpmSolver<D>::grid_to_particles(double dt) {
                 a[d] += s.N[k] * g.acceleration[D * s.node[k] + d];
                 vg[d] += s.N[k] * g.velocity[D * s.node[k] + d];
             }
+        if (m_.apic) {
+            double* C = &p.C[D * D * i];
+            for (int k = 0; k < D * D; ++k) C[k] = 0.0;
+            for (int k = 0; k < s.count; ++k)
+                for (int a = 0; a < D; ++a)
+                    for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[D * s.node[k] + a] * s.dN[k][b];
+        }
         for (int d = 0; d < D; ++d) {
             double& v = p.v[D * i + d];
-            v = flip * (v + a[d] * dt) + (1.0 - flip) * vg[d];
-            p.x[D * i + d] += vg[d] * dt;
+            v = m_.apic ? vg[d] : flip * (v + a[d] * dt) + (1.0 - flip) * vg[d];
+            double& x = p.x[D * i + d];
+            x += vg[d] * dt;
+            if (g.closed[2 * d] && x < g.origin[d]) x = g.origin[d];
+            const double top = g.origin[d] + g.spacing[d] * g.cells[d];
+            if (g.closed[2 * d + 1] && x > top) x = top;
         }
     }
 }
@@ -268,8 +299,17 @@ void MpmSolver<D>::map_momentum_back() {
     auto& g = m_.grid;
     scatter(D, [&](long i, double* buf) {
         const Stencil<D>& s = stencil_[i];
-        for (int k = 0; k < s.count; ++k)
-            for (int d = 0; d < D; ++d) buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * p.v[D * i + d];
+        const double* C = &p.C[D * D * i];
+        for (int k = 0; k < s.count; ++k) {
+            double dx[D];
+            node_offset(s, k, dx);
+            for (int d = 0; d < D; ++d) {
+                double vd = p.v[D * i + d];
+                if (m_.apic)
+                    for (int e = 0; e < D; ++e) vd += C[D * d + e] * dx[e];
+                buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * vd;
+            }
+        }
     }, scratch_);
     const int nn = g.num_nodes();
     const double tiny = 1e-12 * (mass_ / std::max(1, nn));

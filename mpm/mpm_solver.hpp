@@ -33,6 +33,7 @@ struct MpmModel {
     bool axisymmetric = false;          // D = 2 only: x = r
     std::array<double, D> gravity{};    // m/s^2
     double flip = 0.98;                 // FLIP fraction of the particle velocity update
+    bool apic = false;                  // affine PIC transfers (flip unused)
     double cfl = 0.5;                   // of the P-wave crossing time of a cell
     double local_damping = 0.0;         // Cundall's alpha (quasi-static stages)
     std::vector<SurfaceLoad> surface_loads;  // the active ones; set between steps
@@ -60,6 +61,7 @@ public:
     }
 
 private:
+    void node_offset(const Stencil<D>& s, int k, double* dx) const;  // x_node - x_point
     void compute_stencils();
     void particles_to_grid();
     void update_grid(double dt);

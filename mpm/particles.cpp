@@ -16,6 +16,7 @@ void Particles<D>::add(const double* position, double point_mass, double point_v
     for (int i = 0; i < D; ++i)
         for (int j = 0; j < D; ++j) {
             F.push_back(i == j ? 1.0 : 0.0);
+            C.push_back(0.0);
             domain0.push_back(i == j ? lengths[i] : 0.0);
         }
     for (int k = 0; k < 6; ++k) {

@@ -11,6 +11,7 @@ template <int D>
 struct Particles {
     std::vector<double> x;        // D per point, m
     std::vector<double> v;        // D per point, m/s
+    std::vector<double> C;        // D*D per point: affine velocity field (APIC), 1/s, row-major
     std::vector<double> mass;     // kg
     std::vector<double> volume;   // m^3 (current)
     std::vector<double> volume0;  // m^3 (initial)

@@ -257,6 +257,7 @@ template <int D>
 void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, const double* x,
                     const double* half_domain, Stencil<D>& s) {
     s.clear();
+    for (int d = 0; d < D; ++d) s.x[d] = x[d];
     switch (kind) {
         case ShapeKind::Linear: linear<D>(grid, axisymmetric, x, s); break;
         case ShapeKind::GIMP: gimp<D>(grid, axisymmetric, x, half_domain, s); break;

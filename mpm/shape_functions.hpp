@@ -20,6 +20,7 @@ struct Stencil {
     double N[kMax];
     double dN[kMax][D];
     double hoop[kMax];  // axisymmetric only (zero otherwise)
+    double x[D];        // where the point was when the stencil was built
     void clear() { count = 0; }
     int slot(int n);    // the entry for node n, created zeroed if new (searches: CPDI)
     int append(int n);  // a new entry for a node known not to be there yet (linear, GIMP)

@@ -92,6 +92,7 @@ Particles<D> sample_particles(int n, int state_stride) {
         }
     };
     fill(p.v);
+    fill(p.C);
     fill(p.F);
     fill(p.domain0);
     fill(p.stress);
@@ -106,6 +107,7 @@ template <int D>
 void expect_same_particles(const Particles<D>& a, const Particles<D>& b) {
     EXPECT_EQ(a.x, b.x);
     EXPECT_EQ(a.v, b.v);
+    EXPECT_EQ(a.C, b.C);
     EXPECT_EQ(a.mass, b.mass);
     EXPECT_EQ(a.volume, b.volume);
     EXPECT_EQ(a.volume0, b.volume0);

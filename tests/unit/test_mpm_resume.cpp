@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "io/mpm_checkpoint.hpp"
@@ -18,12 +20,25 @@ int run(const std::string& command) {
 }
 }  // namespace
 
-TEST(MpmResume, InterruptedAndResumedRunMatchesAnUninterruptedOne) {
-    const fs::path dir = fs::temp_directory_path() / ("pilempm-resume-" + std::to_string(::getpid()));
+// Runs the 1D wave case (FLIP, or APIC whose affine field must be checkpointed too)
+// whole, and interrupted then resumed, and compares the final states bit for bit.
+void check_resume(bool apic) {
+    const fs::path dir = fs::temp_directory_path() /
+                         ("pilempm-resume-" + std::string(apic ? "apic-" : "flip-") + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string exe = PILEMPM_EXECUTABLE;
-    const std::string case_file = std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/mpm-wave-1d.yaml";
+    std::string case_file = std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/mpm-wave-1d.yaml";
+    if (apic) {
+        std::stringstream text;
+        text << std::ifstream(case_file).rdbuf();
+        std::string yaml = text.str();
+        const auto at = yaml.find("flip: 1.0");
+        ASSERT_NE(at, std::string::npos);
+        yaml.replace(at, 9, "velocity_transfer: apic");
+        case_file = (dir / "wave-apic.yaml").string();
+        std::ofstream(case_file) << yaml;
+    }
 
     ASSERT_EQ(run(exe + " run " + case_file + " --out " + (dir / "whole").string() + " --quiet"), 0);
     // Interrupt after 100 of the ~260 steps: exit 130, the folder kept as .incomplete.
@@ -44,8 +59,12 @@ TEST(MpmResume, InterruptedAndResumedRunMatchesAnUninterruptedOne) {
     for (std::size_t i = 0; i < whole.x.size(); ++i) ASSERT_DOUBLE_EQ(whole.x[i], split.x[i]) << i;
     for (std::size_t i = 0; i < whole.stress.size(); ++i) ASSERT_DOUBLE_EQ(whole.stress[i], split.stress[i]) << i;
     for (std::size_t i = 0; i < whole.v.size(); ++i) ASSERT_DOUBLE_EQ(whole.v[i], split.v[i]) << i;
+    for (std::size_t i = 0; i < whole.C.size(); ++i) ASSERT_DOUBLE_EQ(whole.C[i], split.C[i]) << i;
 
     // Nothing to resume: a clear error, not a fresh run.
     EXPECT_EQ(run(exe + " run " + case_file + " --out " + (dir / "none").string() + " --quiet --resume 2>/dev/null"), 1);
     fs::remove_all(dir);
 }
+
+TEST(MpmResume, InterruptedAndResumedRunMatchesAnUninterruptedOne) { check_resume(false); }
+TEST(MpmResume, InterruptedAndResumedApicRunMatchesAnUninterruptedOne) { check_resume(true); }
