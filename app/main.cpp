@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/drivability_job.hpp"
+#include "app/element_test_job.hpp"
 #include "app/mpm_job.hpp"
 #include "app/pile_wave_job.hpp"
 #include "io/drivability_case.hpp"
@@ -17,7 +18,8 @@ namespace {
 constexpr const char* kUsage = R"(pilempm - pile driving simulator (pile wave analysis, drivability, MPM-FEM)
 
 The case file's `analysis:` key selects what runs: pile_wave (one blow travelling down
-the pile), drivability (SRD and blow count against depth) or mpm (the MPM soil).
+the pile), drivability (SRD and blow count against depth), mpm (the MPM soil) or
+element_test (one soil element along laboratory paths).
 
 Usage:
   pilempm run CASE.yaml [--out DIR] [--quiet] [--resume]
@@ -25,6 +27,8 @@ Usage:
                                                 (default: results/<case name>); --resume
                                                 continues an interrupted MPM run from the
                                                 checkpoint it left in DIR.incomplete
+  pilempm element-test CASE.yaml [--out DIR] [--quiet]
+                                                run an element test (same as run)
   pilempm check CASE.yaml                       validate a case and print what would run
   pilempm --help | --version
 
@@ -51,7 +55,8 @@ int main(int argc, char** argv) {
         return 0;
     }
     const std::string command = args[0];
-    if (command != "run" && command != "check") return usage_error("unknown command '" + command + "'");
+    if (command != "run" && command != "check" && command != "element-test")
+        return usage_error("unknown command '" + command + "'");
     std::string case_file, out_dir;
     bool quiet = false, resume = false;
     for (std::size_t i = 1; i < args.size(); ++i) {
@@ -69,6 +74,13 @@ int main(int argc, char** argv) {
     if (out_dir.empty()) out_dir = (std::filesystem::path("results") / std::filesystem::path(case_file).stem()).string();
     try {
         const std::string kind = pilempm::io::read_analysis_kind(case_file);
+        if (command == "element-test" && kind != "element_test")
+            return usage_error("element-test runs analysis: element_test cases; " + case_file + " is analysis: " + kind);
+        if (kind == "element_test") {
+            if (resume) return usage_error("--resume applies to MPM runs, which write checkpoints");
+            return command == "check" ? pilempm::app::check_element_test_case(case_file)
+                                      : pilempm::app::run_element_test_case(case_file, out_dir, quiet);
+        }
         if (kind == "mpm")
             return command == "check" ? pilempm::app::check_mpm_case(case_file)
                                       : pilempm::app::run_mpm_case(case_file, out_dir, quiet, resume);

@@ -30,18 +30,6 @@ namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
-std::unique_ptr<mpm::ConstitutiveModel> make_material(const io::MpmMaterialInput& m) {
-    if (m.model == "linear_elastic") return std::make_unique<mpm::LinearElastic>(m.youngs_modulus, m.poisson_ratio);
-    return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
-                                              m.cohesion, m.tension_cutoff);
-}
-
-double k0_of(const io::MpmMaterialInput& m) {
-    if (m.k0 > 0.0) return m.k0;
-    if (m.model == "mohr_coulomb") return 1.0 - std::sin(m.friction_angle * std::numbers::pi / 180.0);
-    return m.poisson_ratio / (1.0 - m.poisson_ratio);
-}
-
 template <int D>
 bool in_region(const io::MpmRegionInput& r, const double* x) {
     if (r.kind == io::MpmRegionInput::Cylinder) {
@@ -94,7 +82,7 @@ MpmRun<D> build(const io::MpmCase& c) {
     m.cfl = c.cfl;
     int stride = 0;
     for (const auto& mat : c.materials) {
-        m.materials.push_back(make_material(mat));
+        m.materials.push_back(io::make_constitutive_model(mat));
         stride = std::max(stride, m.materials.back()->num_state());
     }
     m.particles.state_stride = stride;
@@ -112,9 +100,10 @@ MpmRun<D> build(const io::MpmCase& c) {
     }
     if (m.particles.size() == 0) throw std::runtime_error("the regions hold no material points");
     for (const auto& b : c.boundaries) {
-        const auto& mat = c.materials.front();  // absorbing boundaries take the first material
-        const double G = mat.youngs_modulus / (2 * (1 + mat.poisson_ratio));
-        const double M = G * 2 * (1 - mat.poisson_ratio) / (1 - 2 * mat.poisson_ratio);
+        // Absorbing boundaries take the first material, at its stiffness at rest at 100 kPa
+        // where the stiffness depends on pressure.
+        const auto& mat = c.materials.front();
+        const double G = io::shear_modulus_at(mat, 100e3), M = io::p_wave_modulus_at(mat, 100e3);
         mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, mat.density, std::sqrt(M / mat.density),
                                std::sqrt(G / mat.density), c.axisymmetric, b.friction);
     }
@@ -156,7 +145,7 @@ MpmRun<D> build(const io::MpmCase& c) {
             return c.materials.front();
         };
         mpm::apply_k0_stress<D>(p, c.surface, c.gravity, [&](double z) { return material_at(z).density; },
-                                [&](double z) { return k0_of(material_at(z)); });
+                                [&](double z) { return io::k0_of(material_at(z)); });
     }
     for (std::size_t i = 0; i < p.size(); ++i)
         m.materials[p.material[i]]->initialise_state(&p.stress[6 * i], p.state.data() + p.state_stride * i);

@@ -12,7 +12,7 @@
 namespace pilempm::io {
 namespace {
 
-const std::vector<std::string> kAnalyses = {"pile_wave", "drivability", "mpm"};
+const std::vector<std::string> kAnalyses = {"pile_wave", "drivability", "mpm", "element_test"};
 const std::vector<std::string> kChecks = {"static_push", "bearing_graph_monotonic",
                                           "blow_energy_balance", "danish_formula",
                                           "self_weight_penetration"};

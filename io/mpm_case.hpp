@@ -4,18 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "io/material_input.hpp"
 #include "io/pile_hammer_input.hpp"
 #include "mpm/model_setup.hpp"
 #include "mpm/shape_functions.hpp"
 
 namespace pilempm::io {
 
-struct MpmMaterialInput {
-    std::string name, model;  // linear_elastic | mohr_coulomb
-    double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
-    double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
-    double k0 = -1.0;  // <0: 1 - sin(phi) (Mohr-Coulomb) or nu / (1 - nu) (elastic)
-};
+using MpmMaterialInput = MaterialInput;
 
 struct MpmBox {
     std::array<double, 3> min{}, max{};

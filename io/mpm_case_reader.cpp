@@ -61,26 +61,6 @@ void read_grid(MapReader m, MpmCase& c) {
     m.finish();
 }
 
-MpmMaterialInput read_material(MapReader m) {
-    MpmMaterialInput mat;
-    mat.name = m.text_or("name", "");
-    if (mat.name.empty()) m.fail("name", "a material name", "none");
-    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb"});
-    mat.density = m.number("density", positive("density in kg/m^3"));
-    mat.youngs_modulus = m.number("youngs_modulus", positive("Young's modulus in Pa"));
-    mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
-    if (mat.model == "mohr_coulomb") {
-        mat.friction_angle = m.number("friction_angle", {"an angle from 0 to 89 deg", [](double x) { return x >= 0 && x < 89; }});
-        mat.dilation_angle = m.number_or("dilation_angle", 0.0, {"an angle from 0 to the friction angle",
-                                                                 [phi = mat.friction_angle](double x) { return x >= 0 && x <= phi; }});
-        mat.cohesion = m.number_or("cohesion", 0.0, non_negative("cohesion in Pa"));
-        mat.tension_cutoff = m.number_or("tension_cutoff", 0.0, non_negative("tensile strength in Pa"));
-    }
-    mat.k0 = m.number_or("k0", -1.0, positive("earth pressure coefficient at rest"));
-    m.finish();
-    return mat;
-}
-
 MpmRegionInput read_region(MapReader m, const MpmCase& c) {
     MpmRegionInput r;
     r.material = material_index(c, m, "material");
@@ -151,7 +131,7 @@ MpmCase read_mpm_case(const std::string& file) {
         root.fail("flip", "no flip with velocity_transfer: apic (APIC has no FLIP/PIC blend)", "a flip fraction");
     c.flip = root.number_or("flip", 0.98, {"a FLIP fraction from 0 to 1", [](double x) { return x >= 0 && x <= 1; }});
     c.cfl = root.number_or("cfl", 0.5, in_half_open_range(0.0, 1.0, "a Courant number"));
-    for (auto m : root.maps("materials")) c.materials.push_back(read_material(std::move(m)));
+    for (auto m : root.maps("materials")) c.materials.push_back(read_material(std::move(m), true));
     for (auto m : root.maps("regions")) c.regions.push_back(read_region(std::move(m), c));
     if (root.has("boundaries"))
         for (auto m : root.maps("boundaries")) {

@@ -26,6 +26,11 @@ public:
     // and the absorbing boundaries (the largest tangent stiffness the model can show).
     virtual double p_wave_modulus() const = 0;
     virtual double shear_modulus() const = 0;
+    // The P-wave modulus at one point's stress and state, for models whose stiffness grows
+    // with pressure (the stable time step is taken point by point).
+    virtual double p_wave_modulus_at(const double* /*stress*/, const double* /*state*/) const {
+        return p_wave_modulus();
+    }
 };
 
 // Isotropic linear elasticity.

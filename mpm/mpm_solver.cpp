@@ -65,7 +65,9 @@ double MpmSolver<D>::stable_time_step() const {
         const double rho = p.mass[i] / p.volume[i];
         double speed = 0.0;
         for (int d = 0; d < D; ++d) speed += p.v[D * i + d] * p.v[D * i + d];
-        c_max = std::max(c_max, std::sqrt(m_.materials[p.material[i]]->p_wave_modulus() / rho) + std::sqrt(speed));
+        const double M = m_.materials[p.material[i]]->p_wave_modulus_at(&p.stress[6 * i],
+                                                                       p.state.data() + p.state_stride * i);
+        c_max = std::max(c_max, std::sqrt(M / rho) + std::sqrt(speed));
     }
     return c_max > 0.0 ? m_.cfl * h / c_max : 1e300;
 }

@@ -1,0 +1,28 @@
+#pragma once
+// An element-test case (analysis: element_test): one material, an initial effective
+// stress, and a list of laboratory tests, each a path of legs from that initial state.
+#include <string>
+#include <vector>
+
+#include "io/material_input.hpp"
+#include "io/pile_hammer_input.hpp"
+#include "mpm/element_test.hpp"
+
+namespace pilempm::io {
+
+struct ElementTestInput {
+    std::string name, type;  // triaxial_drained | triaxial_undrained | oedometer | isotropic
+    std::vector<mpm::ElementLeg> legs;
+};
+
+struct ElementTestCase : CaseFile {
+    MaterialInput material;
+    double axial_stress = 0.0, lateral_stress = 0.0;  // initial, effective, Pa, compression +
+    std::vector<ElementTestInput> tests;
+    bool plots = true;
+    std::vector<std::string> verification_checks;  // critical_state_drained, undrained_path
+};
+
+ElementTestCase read_element_test_case(const std::string& file);
+
+}  // namespace pilempm::io

@@ -1,0 +1,65 @@
+#include "io/element_test_case.hpp"
+
+#include "io/yaml_reader.hpp"
+
+namespace pilempm::io {
+
+namespace {
+
+ElementTestInput read_test(MapReader m, int index) {
+    ElementTestInput t;
+    t.type = m.choice("type", {"triaxial_drained", "triaxial_undrained", "oedometer", "isotropic"});
+    t.name = m.text_or("name", t.type + "_" + std::to_string(index + 1));
+    // Targets: axial strain (triaxial; negative for extension, alternating for cycles),
+    // axial stress (oedometer) or mean stress (isotropic), compression positive.
+    const bool strain = t.type.rfind("triaxial", 0) == 0;
+    const auto targets = m.numbers("path", {strain ? "axial strains (compression +)" : "stresses in Pa (compression +)",
+                                            [strain](double x) { return strain || x > 0.0; }});
+    if (targets.empty()) m.fail("path", "at least one target", "an empty list");
+    const int steps = m.integer_or("steps_per_leg", 500, 1);
+    for (double target : targets) {
+        mpm::ElementLeg leg;
+        leg.axial_target = target;
+        leg.steps = steps;
+        if (t.type == "triaxial_drained") leg.lateral = mpm::ElementLeg::LateralStress;
+        else if (t.type == "triaxial_undrained") leg.lateral = mpm::ElementLeg::Undrained;
+        else {
+            leg.axial = mpm::ElementLeg::AxialStress;
+            leg.lateral = t.type == "oedometer" ? mpm::ElementLeg::LateralStrainZero
+                                                : mpm::ElementLeg::LateralStressEqualsAxial;
+        }
+        t.legs.push_back(leg);
+    }
+    m.finish();
+    return t;
+}
+
+}  // namespace
+
+ElementTestCase read_element_test_case(const std::string& file) {
+    MapReader root = load_yaml_file(file);
+    ElementTestCase c;
+    read_case_header(root, c, file, "element_test");
+    c.material = read_material(root.map("material"), false);
+    {
+        MapReader s = root.map("initial_stress");
+        c.axial_stress = s.number("axial", positive("effective axial stress in Pa (compression +)"));
+        c.lateral_stress = s.number_or("lateral", c.axial_stress, positive("effective lateral stress in Pa (compression +)"));
+        s.finish();
+    }
+    const auto tests = root.maps("tests");
+    if (tests.empty()) root.fail("tests", "at least one test", "none");
+    for (std::size_t k = 0; k < tests.size(); ++k) c.tests.push_back(read_test(tests[k], static_cast<int>(k)));
+    if (auto o = root.optional_map("output")) {
+        c.plots = o->boolean_or("plots", true);
+        o->finish();
+    }
+    if (auto v = root.optional_map("verification")) {
+        c.verification_checks = v->words("checks", {"critical_state_drained", "undrained_path"});
+        v->finish();
+    }
+    root.finish();
+    return c;
+}
+
+}  // namespace pilempm::io

@@ -1,0 +1,91 @@
+#include "io/material_input.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "mpm/modified_cam_clay.hpp"
+#include "mpm/mohr_coulomb.hpp"
+
+namespace pilempm::io {
+
+namespace {
+double sin_deg(double a) { return std::sin(a * std::numbers::pi / 180.0); }
+}  // namespace
+
+MaterialInput read_material(MapReader m, bool with_density) {
+    MaterialInput mat;
+    mat.name = m.text_or("name", "");
+    if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
+    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay"});
+    if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
+    mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
+    const Expect angle{"an angle from 0 to 89 deg", [](double x) { return x >= 0 && x < 89; }};
+    if (mat.model == "modified_cam_clay") {
+        mat.lambda = m.number("lambda", positive("slope of the normal compression line"));
+        mat.kappa = m.number("kappa", {"a swelling slope below lambda", [l = mat.lambda](double x) { return x > 0 && x < l; }});
+        if (m.has("critical_state_ratio") == m.has("friction_angle"))
+            m.fail("critical_state_ratio", "one of critical_state_ratio (M) or friction_angle (deg)", "both or neither");
+        if (m.has("friction_angle")) {
+            mat.friction_angle = m.number("friction_angle", {"an angle from 0 to 89 deg", [](double x) { return x > 0 && x < 89; }});
+            const double s = sin_deg(mat.friction_angle);
+            mat.critical_state_ratio = 6.0 * s / (3.0 - s);  // triaxial compression
+        } else {
+            mat.critical_state_ratio = m.number("critical_state_ratio", in_open_range(0.0, 3.0, "M = q / p' at critical state"));
+            mat.friction_angle = std::asin(3.0 * mat.critical_state_ratio / (6.0 + mat.critical_state_ratio)) * 180.0 / std::numbers::pi;
+        }
+        mat.void_ratio = m.number("void_ratio", positive("initial void ratio"));
+        mat.ocr = m.number_or("ocr", 1.0, {"an overconsolidation ratio >= 1", [](double x) { return x >= 1.0; }});
+        mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
+    } else {
+        mat.youngs_modulus = m.number("youngs_modulus", positive("Young's modulus in Pa"));
+    }
+    if (mat.model == "mohr_coulomb") {
+        mat.friction_angle = m.number("friction_angle", angle);
+        mat.dilation_angle = m.number_or("dilation_angle", 0.0, {"an angle from 0 to the friction angle",
+                                                                 [phi = mat.friction_angle](double x) { return x >= 0 && x <= phi; }});
+        mat.cohesion = m.number_or("cohesion", 0.0, non_negative("cohesion in Pa"));
+        mat.tension_cutoff = m.number_or("tension_cutoff", 0.0, non_negative("tensile strength in Pa"));
+    }
+    mat.k0 = m.number_or("k0", -1.0, positive("earth pressure coefficient at rest"));
+    m.finish();
+    return mat;
+}
+
+std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialInput& m) {
+    if (m.model == "linear_elastic") return std::make_unique<mpm::LinearElastic>(m.youngs_modulus, m.poisson_ratio);
+    if (m.model == "modified_cam_clay") {
+        mpm::CamClayParameters p;
+        p.lambda = m.lambda;
+        p.kappa = m.kappa;
+        p.M = m.critical_state_ratio;
+        p.poisson_ratio = m.poisson_ratio;
+        p.void_ratio = m.void_ratio;
+        p.ocr = m.ocr;
+        p.p_min = m.min_pressure;
+        return std::make_unique<mpm::ModifiedCamClay>(p);
+    }
+    return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
+                                              m.cohesion, m.tension_cutoff);
+}
+
+double k0_of(const MaterialInput& m) {
+    if (m.k0 > 0.0) return m.k0;
+    if (m.model != "linear_elastic") return 1.0 - sin_deg(m.friction_angle);
+    return m.poisson_ratio / (1.0 - m.poisson_ratio);
+}
+
+double shear_modulus_at(const MaterialInput& m, double p) {
+    const double nu = m.poisson_ratio;
+    if (m.model == "modified_cam_clay") {
+        const double K = (1.0 + m.void_ratio) * std::max(p, m.min_pressure) / m.kappa;
+        return 3.0 * K * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu));
+    }
+    return m.youngs_modulus / (2.0 * (1.0 + nu));
+}
+
+double p_wave_modulus_at(const MaterialInput& m, double p) {
+    const double nu = m.poisson_ratio;
+    return shear_modulus_at(m, p) * 2.0 * (1.0 - nu) / (1.0 - 2.0 * nu);
+}
+
+}  // namespace pilempm::io

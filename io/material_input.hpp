@@ -1,0 +1,31 @@
+#pragma once
+// A soil material as read from a case file (MPM cases and element tests share it), and the
+// constitutive model built from it.
+#include <memory>
+#include <string>
+
+#include "io/yaml_reader.hpp"
+#include "mpm/constitutive_model.hpp"
+
+namespace pilempm::io {
+
+struct MaterialInput {
+    std::string name, model;  // linear_elastic | mohr_coulomb | modified_cam_clay
+    double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
+    double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
+    // Modified Cam clay: NCL and unloading slopes, critical state ratio (or friction_angle),
+    // initial void ratio, OCR, the stiffness floor.
+    double lambda = 0.0, kappa = 0.0, critical_state_ratio = 0.0, void_ratio = 0.0, ocr = 1.0, min_pressure = 1e3;
+    double k0 = -1.0;  // <0: 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
+};
+
+// with_density: MPM materials need one; an element test does not.
+MaterialInput read_material(MapReader m, bool with_density);
+std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialInput& m);
+double k0_of(const MaterialInput& m);
+// Shear and P-wave moduli of the material at rest at mean effective stress p (Pa), for
+// absorbing boundaries.
+double shear_modulus_at(const MaterialInput& m, double p);
+double p_wave_modulus_at(const MaterialInput& m, double p);
+
+}  // namespace pilempm::io
