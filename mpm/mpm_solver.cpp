@@ -160,7 +160,7 @@ void MpmSolver<D>::particles_to_grid() {
             const double N = s.N[k];
             b[0] += N * mass;
             double dx[D];
-            node_offset(s, k, dx);
+            if (m_.apic) node_offset(s, k, dx);
             for (int d = 0; d < D; ++d) {
                 double vd = v[d];
                 if (m_.apic)
@@ -304,7 +304,7 @@ void MpmSolver<D>::map_momentum_back() {
         const double* C = &p.C[D * D * i];
         for (int k = 0; k < s.count; ++k) {
             double dx[D];
-            node_offset(s, k, dx);
+            if (m_.apic) node_offset(s, k, dx);
             for (int d = 0; d < D; ++d) {
                 double vd = p.v[D * i + d];
                 if (m_.apic)

@@ -1,4 +1,4 @@
-// MPM throughput in particle-steps per second: 2D linear-elastic uGIMP, 2D Mohr-Coulomb
+// MPM throughput in particle-steps per second: 2D linear-elastic uGIMP (FLIP and APIC), 2D Mohr-Coulomb
 // CPDI and 3D linear-elastic uGIMP, on 1 and 2 threads (the argument).
 // Run: build/tests/pilempm_benchmarks --benchmark_filter=Mpm
 #include <benchmark/benchmark.h>
@@ -38,9 +38,10 @@ MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb) {
 }
 
 template <int D>
-void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells) {
+void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells, bool apic = false) {
     omp_set_num_threads(static_cast<int>(state.range(0)));
     MpmModel<D> m = block<D>(cells, shape, mohr_coulomb);
+    m.apic = apic;
     MpmSolver<D> solver(m);
     const double dt = solver.stable_time_step();
     for (auto _ : state) solver.step(dt);
@@ -52,9 +53,11 @@ void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells)
 }
 
 void BM_Mpm2dElasticGimp(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100); }
+void BM_Mpm2dElasticGimpApic(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100, true); }
 void BM_Mpm2dMohrCoulombCpdi(benchmark::State& s) { run<2>(s, ShapeKind::CPDI, true, 100); }
 void BM_Mpm3dElasticGimp(benchmark::State& s) { run<3>(s, ShapeKind::GIMP, false, 20); }
 BENCHMARK(BM_Mpm2dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Mpm2dElasticGimpApic)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm2dMohrCoulombCpdi)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm3dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 

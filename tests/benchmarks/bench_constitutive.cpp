@@ -1,0 +1,56 @@
+// Stress updates per second of each soil model on yielding points (the costly branch):
+// a batch of points at a normally consolidated / failure state loaded in shear and
+// compression every iteration. items_per_second is the figure to report.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <numeric>
+#include <vector>
+
+#include "mpm/modified_cam_clay.hpp"
+#include "mpm/mohr_coulomb.hpp"
+
+using namespace pilempm::mpm;
+
+namespace {
+
+constexpr int kPoints = 10000;
+
+void run(benchmark::State& s, const ConstitutiveModel& model, double p0) {
+    std::vector<int> idx(kPoints);
+    std::iota(idx.begin(), idx.end(), 0);
+    const int stride = model.num_state();
+    std::vector<double> stress(6 * kPoints), state(static_cast<std::size_t>(stride) * kPoints), de(6 * kPoints);
+    for (int i = 0; i < kPoints; ++i) {
+        double* sg = &stress[6 * i];
+        sg[0] = sg[1] = -0.5 * p0;
+        sg[2] = -p0;
+        sg[3] = 0.05 * p0 * (i % 7) / 7.0;
+        sg[4] = sg[5] = 0.0;
+        model.initialise_state(sg, &state[static_cast<std::size_t>(stride) * i]);
+        const double d[6] = {2e-5, 2e-5, -6e-5, 1e-5, 0.0, 0.0};  // compression and shear
+        std::copy(d, d + 6, &de[6 * i]);
+    }
+    for (auto _ : s) {
+        model.update(kPoints, idx.data(), de.data(), stress.data(), state.data(), stride);
+        benchmark::DoNotOptimize(stress.data());
+    }
+    s.SetItemsProcessed(s.iterations() * kPoints);
+}
+
+void BM_StressUpdateMohrCoulomb(benchmark::State& s) {
+    const MohrCoulomb model(30e6, 0.3, 30.0, 0.0, 0.0, 0.0);
+    run(s, model, 100e3);
+}
+
+void BM_StressUpdateModifiedCamClay(benchmark::State& s) {
+    CamClayParameters p;
+    p.M = 1.2;
+    const ModifiedCamClay model(p);
+    run(s, model, 100e3);
+}
+
+}  // namespace
+
+BENCHMARK(BM_StressUpdateMohrCoulomb)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateModifiedCamClay)->Unit(benchmark::kMillisecond);
