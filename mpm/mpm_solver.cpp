@@ -49,10 +49,18 @@ void apply_wall(int wall, double friction, double* v) {
 
 }  // namespace
 
+// The velocity a point carries to node k of its stencil: its own, plus with APIC its
+// affine field C (x_node - x_point).
 template <int D>
-void MpmSolver<D>::node_offset(const Stencil<D>& s, int k, double* dx) const {
+void MpmSolver<D>::velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C,
+                                        double* out) const {
+    for (int d = 0; d < D; ++d) out[d] = v[d];
+    if (!m_.apic) return;
     const auto ijk = m_.grid.ijk(s.node[k]);
+    double dx[D];
     for (int d = 0; d < D; ++d) dx[d] = m_.grid.coordinate(d, ijk[d]) - s.x[d];
+    for (int d = 0; d < D; ++d)
+        for (int e = 0; e < D; ++e) out[d] += C[D * d + e] * dx[e];
 }
 
 template <int D>
@@ -159,13 +167,10 @@ void MpmSolver<D>::particles_to_grid() {
             double* b = buf + F * s.node[k];
             const double N = s.N[k];
             b[0] += N * mass;
-            double dx[D];
-            if (m_.apic) node_offset(s, k, dx);
+            double vn[D];
+            velocity_toward_node(s, k, v, C, vn);
             for (int d = 0; d < D; ++d) {
-                double vd = v[d];
-                if (m_.apic)
-                    for (int e = 0; e < D; ++e) vd += C[D * d + e] * dx[e];
-                b[1 + d] += N * mass * vd;
+                b[1 + d] += N * mass * vn[d];
                 const double external = N * (mass * m_.gravity[d] + p.external_force[D * i + d]);
                 double f = external;
                 for (int e = 0; e < D; ++e) f -= vol * S[d][e] * s.dN[k][e];
@@ -303,14 +308,9 @@ void MpmSolver<D>::map_momentum_back() {
         const Stencil<D>& s = stencil_[i];
         const double* C = &p.C[D * D * i];
         for (int k = 0; k < s.count; ++k) {
-            double dx[D];
-            if (m_.apic) node_offset(s, k, dx);
-            for (int d = 0; d < D; ++d) {
-                double vd = p.v[D * i + d];
-                if (m_.apic)
-                    for (int e = 0; e < D; ++e) vd += C[D * d + e] * dx[e];
-                buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * vd;
-            }
+            double vn[D];
+            velocity_toward_node(s, k, &p.v[D * i], C, vn);
+            for (int d = 0; d < D; ++d) buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * vn[d];
         }
     }, scratch_);
     const int nn = g.num_nodes();

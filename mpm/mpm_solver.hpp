@@ -61,7 +61,7 @@ public:
     }
 
 private:
-    void node_offset(const Stencil<D>& s, int k, double* dx) const;  // x_node - x_point
+    void velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C, double* out) const;
     void compute_stencils();
     void particles_to_grid();
     void update_grid(double dt);
@@ -76,8 +76,8 @@ private:
     std::vector<std::vector<int>> points_of_material_;
     std::vector<std::vector<double>> thread_buffer_;
     std::vector<double> scratch_;
-    std::vector<double> external_;
-    std::vector<double> residual_;  // D per node: unbalanced force after the walls' reaction  // D per node: gravity and tractions, for the equilibrium measure
+    std::vector<double> external_;  // D per node: gravity and tractions, for the equilibrium measure
+    std::vector<double> residual_;  // D per node: unbalanced force after the walls' reaction
     double time_ = 0.0;
     double mass_ = 0.0;
     long steps_ = 0;
