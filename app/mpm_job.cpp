@@ -100,10 +100,10 @@ MpmRun<D> build(const io::MpmCase& c) {
     }
     if (m.particles.size() == 0) throw std::runtime_error("the regions hold no material points");
     for (const auto& b : c.boundaries) {
-        // Absorbing boundaries take the first material, at its stiffness at rest at 100 kPa
-        // where the stiffness depends on pressure.
+        // Absorbing boundaries take the first material's moduli (a pressure-dependent model
+        // states them at its reference pressure).
         const auto& mat = c.materials.front();
-        const double G = io::shear_modulus_at(mat, 100e3), M = io::p_wave_modulus_at(mat, 100e3);
+        const double G = m.materials.front()->shear_modulus(), M = m.materials.front()->p_wave_modulus();
         mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, mat.density, std::sqrt(M / mat.density),
                                std::sqrt(G / mat.density), c.axisymmetric, b.friction);
     }

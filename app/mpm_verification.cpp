@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coupling/granular_collapse.hpp"
+
 namespace pilempm::app {
 
 using coupling::make_check;
@@ -145,42 +147,13 @@ VerificationCheck k0_ratio(const io::MpmCase& c, const mpm::MpmModel<D>& m) {
                       "|sigma_h / sigma_v - K0| over the points after the nil step");
 }
 
-// Front of the deposit along x: the furthest point of the material that is continuous from
-// the column. Points beyond a gap of one empty grid cell are grains that left the deposit;
-// an experimenter's ruler stops at the deposit's edge too.
-template <int D>
-double deposit_front(const mpm::MpmModel<D>& m) {
-    const auto& g = m.grid;
-    std::vector<char> occupied(g.cells[0], 0);
-    for (std::size_t i = 0; i < m.particles.size(); ++i) occupied[g.cell_of(0, m.particles.x[D * i])] = 1;
-    int last = 0;
-    while (last + 1 < g.cells[0] && occupied[last + 1]) ++last;
-    double front = g.origin[0];
-    for (std::size_t i = 0; i < m.particles.size(); ++i)
-        if (g.cell_of(0, m.particles.x[D * i]) <= last) front = std::max(front, m.particles.x[D * i]);
-    return front;
-}
-
-// Granular column collapse: normalised run-out (L_f - L_0) / L_0 against the experimental
-// laws of Lube et al. for aspect ratio a = H / L_0. Plane strain (2005, Phys. Rev. E 72,
-// 041301): 1.2 a for a < 1.8, 1.9 a^(2/3) for a > 2.8, linear between the two in the
-// transition they leave open. Axisymmetric (2004, J. Fluid Mech. 508, 175-199), with L_0
-// the radius: 1.24 a for a < 1.7, 1.6 a^(1/2) above.
-double lube_runout(double a, bool axisymmetric) {
-    if (axisymmetric) return a < 1.7 ? 1.24 * a : 1.6 * std::sqrt(a);
-    auto tall = [](double x) { return 1.9 * std::cbrt(x * x); };
-    if (a < 1.8) return 1.2 * a;
-    if (a > 2.8) return tall(a);
-    return 1.2 * 1.8 + (a - 1.8) / (2.8 - 1.8) * (tall(2.8) - 1.2 * 1.8);
-}
-
 template <int D>
 VerificationCheck runout(const io::MpmCase& c, const mpm::MpmModel<D>& m) {
     const double width = parameter(c, "initial_width", "granular_runout");
     const double height = parameter(c, "height", "granular_runout");
-    const double computed = (deposit_front<D>(m) - c.origin[0] - width) / width;
+    const double computed = (coupling::deposit_front<D>(m) - c.origin[0] - width) / width;
     const bool axi = D == 2 && c.axisymmetric;
-    return make_check("normalised_runout", computed, lube_runout(height / width, axi), 0.15, true,
+    return make_check("normalised_runout", computed, coupling::lube_runout(height / width, axi), 0.15, true,
                       std::string("(L_f - L_0) / L_0 of the deposit against Lube et al. (") + (axi ? "2004" : "2005") +
                           ") at a = H / L_0");
 }

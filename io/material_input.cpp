@@ -74,18 +74,4 @@ double k0_of(const MaterialInput& m) {
     return m.poisson_ratio / (1.0 - m.poisson_ratio);
 }
 
-double shear_modulus_at(const MaterialInput& m, double p) {
-    const double nu = m.poisson_ratio;
-    if (m.model == "modified_cam_clay") {
-        const double K = (1.0 + m.void_ratio) * std::max(p, m.min_pressure) / m.kappa;
-        return 3.0 * K * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu));
-    }
-    return m.youngs_modulus / (2.0 * (1.0 + nu));
-}
-
-double p_wave_modulus_at(const MaterialInput& m, double p) {
-    const double nu = m.poisson_ratio;
-    return shear_modulus_at(m, p) * 2.0 * (1.0 - nu) / (1.0 - 2.0 * nu);
-}
-
 }  // namespace pilempm::io

@@ -23,9 +23,5 @@ struct MaterialInput {
 MaterialInput read_material(MapReader m, bool with_density);
 std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialInput& m);
 double k0_of(const MaterialInput& m);
-// Shear and P-wave moduli of the material at rest at mean effective stress p (Pa), for
-// absorbing boundaries.
-double shear_modulus_at(const MaterialInput& m, double p);
-double p_wave_modulus_at(const MaterialInput& m, double p);
 
 }  // namespace pilempm::io

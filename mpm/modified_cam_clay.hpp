@@ -45,7 +45,6 @@ public:
 
     double yield_function(const double* stress, double pc) const;
     const CamClayParameters& parameters() const { return par_; }
-    void set_reference_pressure(double p) { p_ref_ = p; }
 
 private:
     struct Point {
@@ -65,7 +64,7 @@ private:
 
     CamClayParameters par_;
     double g_over_k_;     // G / K from Poisson's ratio
-    double p_ref_ = 100e3;
+    static constexpr double p_ref_ = 100e3;  // Pa: where p_wave_modulus() is stated
 };
 
 }  // namespace pilempm::mpm

@@ -1,0 +1,33 @@
+#include "coupling/granular_collapse.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace pilempm::coupling {
+
+template <int D>
+double deposit_front(const mpm::MpmModel<D>& m) {
+    const auto& g = m.grid;
+    std::vector<char> occupied(g.cells[0], 0);
+    for (std::size_t i = 0; i < m.particles.size(); ++i) occupied[g.cell_of(0, m.particles.x[D * i])] = 1;
+    int last = 0;
+    while (last + 1 < g.cells[0] && occupied[last + 1]) ++last;
+    double front = g.origin[0];
+    for (std::size_t i = 0; i < m.particles.size(); ++i)
+        if (g.cell_of(0, m.particles.x[D * i]) <= last) front = std::max(front, m.particles.x[D * i]);
+    return front;
+}
+
+double lube_runout(double a, bool axisymmetric) {
+    if (axisymmetric) return a < 1.7 ? 1.24 * a : 1.6 * std::sqrt(a);
+    auto tall = [](double x) { return 1.9 * std::cbrt(x * x); };
+    if (a < 1.8) return 1.2 * a;
+    if (a > 2.8) return tall(a);
+    return 1.2 * 1.8 + (a - 1.8) / (2.8 - 1.8) * (tall(2.8) - 1.2 * 1.8);
+}
+
+template double deposit_front<2>(const mpm::MpmModel<2>&);
+template double deposit_front<3>(const mpm::MpmModel<3>&);
+
+}  // namespace pilempm::coupling
