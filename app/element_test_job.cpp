@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/element_test_checks.hpp"
 #include "app/verification_runner.hpp"
 #include "io/csv_writer.hpp"
 #include "io/element_test_case.hpp"
@@ -21,11 +22,6 @@ namespace {
 using coupling::make_check;
 using coupling::VerificationCheck;
 
-struct TestResult {
-    const io::ElementTestInput* input;
-    std::vector<mpm::ElementRecord> path;
-};
-
 Table to_table(const TestResult& r, const mpm::ConstitutiveModel& model) {
     std::vector<std::string> cols = {"axial_strain", "volumetric_strain", "axial_stress_Pa", "lateral_stress_Pa",
                                      "mean_effective_stress_Pa", "deviator_stress_Pa"};
@@ -38,57 +34,6 @@ Table to_table(const TestResult& r, const mpm::ConstitutiveModel& model) {
         for (std::size_t c = 0; c < row.size(); ++c) t.data[c].push_back(row[c]);
     }
     return t;
-}
-
-const TestResult& first_of(const std::vector<TestResult>& results, const std::string& type, const char* check) {
-    for (const auto& r : results)
-        if (r.input->type == type) return r;
-    throw std::invalid_argument(std::string(check) + " needs a " + type + " test in the case");
-}
-
-void require_cam_clay(const io::ElementTestCase& c, const char* check) {
-    if (c.material.model != "modified_cam_clay")
-        throw std::invalid_argument(std::string(check) + " is the closed form of modified_cam_clay");
-}
-
-// The swelling line through the initial state meets the NCL at p_c0: e_N = e0 + lambda ln p_c0
-// - kappa ln(p_c0 / p0); the CSL lies (lambda - kappa) ln 2 below the NCL.
-std::vector<VerificationCheck> critical_state_drained(const io::ElementTestCase& c, const TestResult& r,
-                                                      const std::vector<double>& state0, double p0) {
-    require_cam_clay(c, "critical_state_drained");
-    const auto& m = c.material;
-    const auto& end = r.path.back();
-    const double M = m.critical_state_ratio, sr = c.lateral_stress;
-    const double pf = 3.0 * sr / (3.0 - M);
-    const double eN = state0[1] + m.lambda * std::log(state0[0]) - m.kappa * std::log(state0[0] / p0);
-    const double e_cs = eN - (m.lambda - m.kappa) * std::log(2.0) - m.lambda * std::log(end.p);
-    return {make_check("drained_final_stress_ratio", end.q / end.p, M, 0.01, true, "q / p' = M at critical state"),
-            make_check("drained_final_mean_stress_Pa", end.p, pf, 0.01, true, "p' = 3 sigma'_r / (3 - M)"),
-            make_check("drained_final_void_ratio", end.state[1], e_cs, 0.01, true,
-                       "e on the CSL: e_N - (lambda - kappa) ln 2 - lambda ln p'")};
-}
-
-// At constant volume p_c = p_c0 (p0 / p')^(kappa / (lambda - kappa)), and the path lies on
-// the yield surface q^2 = M^2 p' (p_c - p'); it ends at p_c / 2.
-std::vector<VerificationCheck> undrained_path(const io::ElementTestCase& c, const TestResult& r,
-                                              const std::vector<double>& state0, double p0) {
-    require_cam_clay(c, "undrained_path");
-    const auto& m = c.material;
-    const double M = m.critical_state_ratio, e = m.kappa / (m.lambda - m.kappa);
-    // End point: p_c0 (p0 / p)^e = 2 p  ->  p = (p_c0 p0^e / 2)^(1 / (1 + e)).
-    const double pf = std::pow(state0[0] * std::pow(p0, e) / 2.0, 1.0 / (1.0 + e));
-    double worst = 0.0;
-    bool yielded = false;
-    for (const auto& rec : r.path) {
-        const double pc = state0[0] * std::pow(p0 / rec.p, e);
-        if (rec.state[0] > state0[0] * (1.0 + 1e-9)) yielded = true;
-        if (yielded) worst = std::max(worst, std::abs(rec.q - M * std::sqrt(std::max(0.0, rec.p * (pc - rec.p)))));
-    }
-    const auto& end = r.path.back();
-    return {make_check("undrained_final_mean_stress_Pa", end.p, pf, 0.01, true, "p' = p_c / 2 at constant volume"),
-            make_check("undrained_final_deviator_Pa", end.q, M * pf, 0.01, true, "q = M p'"),
-            make_check("undrained_path_max_deviator_error_relative", worst / (M * pf), 0.0, 0.01, false,
-                       "max |q - M sqrt(p' (p_c - p'))| / q_f along the yielding path")};
 }
 
 }  // namespace
@@ -137,10 +82,9 @@ int run_element_test_case(const std::string& file, const fs::path& out_dir, bool
     bool passed = true;
     if (!c.verification_checks.empty()) {
         std::vector<VerificationCheck> checks;
+        const ElementTestContext ctx{c, results, state0, p0};
         for (const auto& name : c.verification_checks) {
-            const auto add = name == "critical_state_drained"
-                                 ? critical_state_drained(c, first_of(results, "triaxial_drained", name.c_str()), state0, p0)
-                                 : undrained_path(c, first_of(results, "triaxial_undrained", name.c_str()), state0, p0);
+            const auto add = element_test_checks(name, ctx);
             checks.insert(checks.end(), add.begin(), add.end());
         }
         io::write_json(staged.path() / "verification.json", verification_json(c, checks, io::JsonObject{}));

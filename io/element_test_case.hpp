@@ -20,7 +20,14 @@ struct ElementTestCase : CaseFile {
     double axial_stress = 0.0, lateral_stress = 0.0;  // initial, effective, Pa, compression +
     std::vector<ElementTestInput> tests;
     bool plots = true;
-    std::vector<std::string> verification_checks;  // critical_state_drained, undrained_path
+    std::vector<std::string> verification_checks;  // names from element_test_check_names
+};
+
+// The closed-form checks an element-test case may ask for (app/element_test_checks.cpp
+// holds what each computes).
+inline const std::vector<std::string> element_test_check_names = {
+    "critical_state_drained",  // modified Cam clay
+    "undrained_path",          // modified Cam clay
 };
 
 ElementTestCase read_element_test_case(const std::string& file);

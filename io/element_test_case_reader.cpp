@@ -55,7 +55,7 @@ ElementTestCase read_element_test_case(const std::string& file) {
         o->finish();
     }
     if (auto v = root.optional_map("verification")) {
-        c.verification_checks = v->words("checks", {"critical_state_drained", "undrained_path"});
+        c.verification_checks = v->words("checks", element_test_check_names);
         v->finish();
     }
     root.finish();

@@ -15,6 +15,9 @@ public:
     virtual ~ConstitutiveModel() = default;
     virtual std::string name() const = 0;
     virtual int num_state() const { return 0; }
+    // How many symmetric tensors (6 components each, xx yy zz xy yz zx, tensor shear) open
+    // the state array; the solver rotates them with the stress (e.g. intergranular strain).
+    virtual int num_tensor_state() const { return 0; }
     virtual const char* state_name(int /*k*/) const { return ""; }
     // Sets the state of one point given its initial stress (e.g. after K0 initialisation).
     virtual void initialise_state(const double* /*stress*/, double* /*state*/) const {}

@@ -1,0 +1,30 @@
+#include "app/element_test_checks.hpp"
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+namespace pilempm::app {
+
+const TestResult& ElementTestContext::first_of(const std::string& type, const std::string& check) const {
+    for (const auto& r : results)
+        if (r.input->type == type) return r;
+    throw std::invalid_argument(check + " needs a " + type + " test in the case");
+}
+
+void ElementTestContext::require_model(const std::string& model, const std::string& check) const {
+    if (c.material.model != model) throw std::invalid_argument(check + " is a closed form of " + model);
+}
+
+std::vector<coupling::VerificationCheck> element_test_checks(const std::string& name, const ElementTestContext& ctx) {
+    using Check = std::function<std::vector<coupling::VerificationCheck>(const ElementTestContext&)>;
+    static const std::map<std::string, Check> table = {
+        {"critical_state_drained", critical_state_drained},
+        {"undrained_path", undrained_path},
+    };
+    const auto it = table.find(name);
+    if (it == table.end()) throw std::invalid_argument("no element-test check named " + name);
+    return it->second(ctx);
+}
+
+}  // namespace pilempm::app

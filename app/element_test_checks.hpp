@@ -1,0 +1,36 @@
+#pragma once
+// Closed-form checks of element tests, by name (the case's verification.checks). Each model
+// family keeps its checks in its own file (element_checks_<model>.cpp); the table that maps
+// a name to its function is in element_test_checks.cpp.
+#include <string>
+#include <vector>
+
+#include "coupling/pile_wave_verification.hpp"
+#include "io/element_test_case.hpp"
+
+namespace pilempm::app {
+
+struct TestResult {
+    const io::ElementTestInput* input;
+    std::vector<mpm::ElementRecord> path;
+};
+
+// What every check may look at: the case, all test paths, the initial state and p'.
+struct ElementTestContext {
+    const io::ElementTestCase& c;
+    const std::vector<TestResult>& results;
+    const std::vector<double>& state0;
+    double p0;
+    // The first test of this type, or an error naming the check that needs it.
+    const TestResult& first_of(const std::string& type, const std::string& check) const;
+    // An error unless the case's material is `model`.
+    void require_model(const std::string& model, const std::string& check) const;
+};
+
+std::vector<coupling::VerificationCheck> element_test_checks(const std::string& name, const ElementTestContext& ctx);
+
+// Per model family.
+std::vector<coupling::VerificationCheck> critical_state_drained(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> undrained_path(const ElementTestContext& ctx);
+
+}  // namespace pilempm::app
