@@ -16,11 +16,19 @@ void ElementTestContext::require_model(const std::string& model, const std::stri
     if (c.material.model != model) throw std::invalid_argument(check + " is a closed form of " + model);
 }
 
+int ElementTestContext::state_index(const std::string& name, const std::string& check) const {
+    for (int k = 0; k < model.num_state(); ++k)
+        if (name == model.state_name(k)) return k;
+    throw std::invalid_argument(check + " needs the state variable " + name + ", which " + model.name() + " has not");
+}
+
 std::vector<coupling::VerificationCheck> element_test_checks(const std::string& name, const ElementTestContext& ctx) {
     using Check = std::function<std::vector<coupling::VerificationCheck>(const ElementTestContext&)>;
     static const std::map<std::string, Check> table = {
         {"critical_state_drained", critical_state_drained},
         {"undrained_path", undrained_path},
+        {"critical_void_ratio", critical_void_ratio},
+        {"isotropic_compression_line", isotropic_compression_line},
     };
     const auto it = table.find(name);
     if (it == table.end()) throw std::invalid_argument("no element-test check named " + name);

@@ -18,6 +18,7 @@ struct TestResult {
 // What every check may look at: the case, all test paths, the initial state and p'.
 struct ElementTestContext {
     const io::ElementTestCase& c;
+    const mpm::ConstitutiveModel& model;
     const std::vector<TestResult>& results;
     const std::vector<double>& state0;
     double p0;
@@ -25,6 +26,8 @@ struct ElementTestContext {
     const TestResult& first_of(const std::string& type, const std::string& check) const;
     // An error unless the case's material is `model`.
     void require_model(const std::string& model, const std::string& check) const;
+    // Where the model keeps the state variable `name` in ElementRecord::state.
+    int state_index(const std::string& name, const std::string& check) const;
 };
 
 std::vector<coupling::VerificationCheck> element_test_checks(const std::string& name, const ElementTestContext& ctx);
@@ -32,5 +35,7 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
 // Per model family.
 std::vector<coupling::VerificationCheck> critical_state_drained(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> undrained_path(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> critical_void_ratio(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> isotropic_compression_line(const ElementTestContext& ctx);
 
 }  // namespace pilempm::app

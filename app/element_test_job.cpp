@@ -63,7 +63,11 @@ int run_element_test_case(const std::string& file, const fs::path& out_dir, bool
         .add("model", c.material.model);
     std::vector<io::JsonObject> tests;
     for (const auto& t : c.tests) {
-        mpm::ElementTest test(*model, s0, state0);
+        std::vector<double> start = state0;
+        if (t.void_ratio > 0.0)
+            for (int k = 0; k < model->num_state(); ++k)
+                if (std::string(model->state_name(k)) == "void_ratio") start[k] = t.void_ratio;
+        mpm::ElementTest test(*model, s0, start);
         TestResult r{&t, {test.record()}};
         for (const auto& leg : t.legs) test.run(leg, r.path);
         io::write_csv(staged.path() / (t.name + ".csv"), to_table(r, *model));
@@ -82,7 +86,7 @@ int run_element_test_case(const std::string& file, const fs::path& out_dir, bool
     bool passed = true;
     if (!c.verification_checks.empty()) {
         std::vector<VerificationCheck> checks;
-        const ElementTestContext ctx{c, results, state0, p0};
+        const ElementTestContext ctx{c, *model, results, state0, p0};
         for (const auto& name : c.verification_checks) {
             const auto add = element_test_checks(name, ctx);
             checks.insert(checks.end(), add.begin(), add.end());

@@ -13,6 +13,7 @@ namespace pilempm::io {
 struct ElementTestInput {
     std::string name, type;  // triaxial_drained | triaxial_undrained | oedometer | isotropic
     std::vector<mpm::ElementLeg> legs;
+    double void_ratio = -1.0;  // > 0: start from this e instead of the material's
 };
 
 struct ElementTestCase : CaseFile {
@@ -28,6 +29,8 @@ struct ElementTestCase : CaseFile {
 inline const std::vector<std::string> element_test_check_names = {
     "critical_state_drained",  // modified Cam clay
     "undrained_path",          // modified Cam clay
+    "critical_void_ratio",         // hypoplastic
+    "isotropic_compression_line",  // hypoplastic
 };
 
 ElementTestCase read_element_test_case(const std::string& file);

@@ -6,7 +6,7 @@ namespace pilempm::io {
 
 namespace {
 
-ElementTestInput read_test(MapReader m, int index) {
+ElementTestInput read_test(MapReader m, int index, const MaterialInput& material) {
     ElementTestInput t;
     t.type = m.choice("type", {"triaxial_drained", "triaxial_undrained", "oedometer", "isotropic"});
     t.name = m.text_or("name", t.type + "_" + std::to_string(index + 1));
@@ -17,6 +17,10 @@ ElementTestInput read_test(MapReader m, int index) {
                                             [strain](double x) { return strain || x > 0.0; }});
     if (targets.empty()) m.fail("path", "at least one target", "an empty list");
     const int steps = m.integer_or("steps_per_leg", 500, 1);
+    if (m.has("void_ratio")) {
+        if (!has_void_ratio(material)) m.fail("void_ratio", "a material with a void ratio (modified_cam_clay, hypoplastic)", material.model);
+        t.void_ratio = m.number("void_ratio", positive("the void ratio this test starts from"));
+    }
     for (double target : targets) {
         mpm::ElementLeg leg;
         leg.axial_target = target;
@@ -49,7 +53,7 @@ ElementTestCase read_element_test_case(const std::string& file) {
     }
     const auto tests = root.maps("tests");
     if (tests.empty()) root.fail("tests", "at least one test", "none");
-    for (std::size_t k = 0; k < tests.size(); ++k) c.tests.push_back(read_test(tests[k], static_cast<int>(k)));
+    for (std::size_t k = 0; k < tests.size(); ++k) c.tests.push_back(read_test(tests[k], static_cast<int>(k), c.material));
     if (auto o = root.optional_map("output")) {
         c.plots = o->boolean_or("plots", true);
         o->finish();

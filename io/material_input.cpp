@@ -10,15 +10,43 @@ namespace pilempm::io {
 
 namespace {
 double sin_deg(double a) { return std::sin(a * std::numbers::pi / 180.0); }
+// Keys as in the literature (Herle & Gudehus 1999 calibration): phi_c as friction_angle.
+void read_hypoplastic(MapReader& m, MaterialInput& mat) {
+    auto& h = mat.hypo;
+    mat.friction_angle = m.number("friction_angle", {"the critical friction angle phi_c, 10 to 60 deg",
+                                                     [](double x) { return x >= 10 && x < 60; }});
+    h.h_s = m.number("h_s", positive("granular hardness h_s in Pa"));
+    h.n = m.number("n", in_open_range(0.0, 1.0, "the exponent n of the compression law"));
+    h.e_d0 = m.number("e_d0", positive("minimum void ratio at p = 0"));
+    h.e_c0 = m.number("e_c0", {"critical void ratio at p = 0, above e_d0", [d = h.e_d0](double x) { return x > d; }});
+    h.e_i0 = m.number("e_i0", {"maximum void ratio at p = 0, above e_c0", [c = h.e_c0](double x) { return x > c; }});
+    h.alpha = m.number("alpha", non_negative("pycnotropy exponent alpha"));
+    h.beta = m.number("beta", non_negative("pycnotropy exponent beta"));
+    h.p_t = m.number_or("p_t", 0.0, non_negative("stress shift p_t in Pa"));
+    mat.void_ratio = m.number("void_ratio", {"initial void ratio between e_d0 / 2 and e_i0",
+                                             [&h](double x) { return x > 0.5 * h.e_d0 && x <= h.e_i0; }});
+    h.intergranular_strain = m.boolean_or("intergranular_strain", true);
+    if (h.intergranular_strain) {
+        h.m_T = m.number_or("m_T", 2.0, {"m_T >= 1", [](double x) { return x >= 1.0; }});
+        h.m_R = m.number_or("m_R", 5.0, {"m_R >= m_T", [t = h.m_T](double x) { return x >= t; }});
+        h.R_max = m.number_or("R_max", 1e-4, positive("the elastic range R of the intergranular strain"));
+        h.beta_r = m.number_or("beta_r", 0.5, positive("beta_r"));
+        h.chi = m.number_or("chi", 6.0, positive("chi"));
+        h.delta_along_stress = m.choice_or("initial_intergranular_strain", "zero", {"zero", "along_stress"}) == "along_stress";
+    }
+    mat.min_pressure = m.number_or("min_pressure", 1.0, positive("least shifted mean stress in Pa"));
+}
+
 }  // namespace
 
 MaterialInput read_material(MapReader m, bool with_density) {
     MaterialInput mat;
     mat.name = m.text_or("name", "");
     if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
-    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay"});
+    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "hypoplastic"});
     if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
-    mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
+    if (mat.model != "hypoplastic")
+        mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
     const Expect angle{"an angle from 0 to 89 deg", [](double x) { return x >= 0 && x < 89; }};
     if (mat.model == "modified_cam_clay") {
         mat.lambda = m.number("lambda", positive("slope of the normal compression line"));
@@ -36,6 +64,8 @@ MaterialInput read_material(MapReader m, bool with_density) {
         mat.void_ratio = m.number("void_ratio", positive("initial void ratio"));
         mat.ocr = m.number_or("ocr", 1.0, {"an overconsolidation ratio >= 1", [](double x) { return x >= 1.0; }});
         mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
+    } else if (mat.model == "hypoplastic") {
+        read_hypoplastic(m, mat);
     } else {
         mat.youngs_modulus = m.number("youngs_modulus", positive("Young's modulus in Pa"));
     }
@@ -64,9 +94,18 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
         p.p_min = m.min_pressure;
         return std::make_unique<mpm::ModifiedCamClay>(p);
     }
+    if (m.model == "hypoplastic") {
+        mpm::HypoplasticParameters p = m.hypo;
+        p.phi_c = m.friction_angle;
+        p.void_ratio = m.void_ratio;
+        p.p_min = m.min_pressure;
+        return std::make_unique<mpm::Hypoplastic>(p);
+    }
     return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
                                               m.cohesion, m.tension_cutoff);
 }
+
+bool has_void_ratio(const MaterialInput& m) { return m.model == "modified_cam_clay" || m.model == "hypoplastic"; }
 
 double k0_of(const MaterialInput& m) {
     if (m.k0 > 0.0) return m.k0;

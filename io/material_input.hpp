@@ -6,16 +6,20 @@
 
 #include "io/yaml_reader.hpp"
 #include "mpm/constitutive_model.hpp"
+#include "mpm/hypoplastic.hpp"
 
 namespace pilempm::io {
 
 struct MaterialInput {
-    std::string name, model;  // linear_elastic | mohr_coulomb | modified_cam_clay
+    std::string name, model;  // linear_elastic | mohr_coulomb | modified_cam_clay | hypoplastic
     double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
     double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
     // Modified Cam clay: NCL and unloading slopes, critical state ratio (or friction_angle),
     // initial void ratio, OCR, the stiffness floor.
     double lambda = 0.0, kappa = 0.0, critical_state_ratio = 0.0, void_ratio = 0.0, ocr = 1.0, min_pressure = 1e3;
+    // Hypoplastic (von Wolffersdorff) with intergranular strain (Niemunis & Herle); phi_c,
+    // e0 and p_min come from friction_angle, void_ratio and min_pressure.
+    mpm::HypoplasticParameters hypo;
     double k0 = -1.0;  // <0: 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
 };
 
@@ -23,5 +27,7 @@ struct MaterialInput {
 MaterialInput read_material(MapReader m, bool with_density);
 std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialInput& m);
 double k0_of(const MaterialInput& m);
+// Whether the model carries the void ratio as a state variable named "void_ratio".
+bool has_void_ratio(const MaterialInput& m);
 
 }  // namespace pilempm::io

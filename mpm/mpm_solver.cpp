@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/objective_rotation.hpp"
+
 namespace pilempm::mpm {
 
 // Below this many points a step is too short to pay for waking threads.
@@ -17,6 +19,7 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
     if (m_.axisymmetric && D != 2) throw std::invalid_argument("axisymmetry needs D = 2");
     if (m_.grid.mass.empty()) m_.grid.allocate();
     points_of_material_.assign(m_.materials.size(), {});
+    for (const auto& mat : m_.materials) tensor_states_.push_back(mat->num_tensor_state());
     for (std::size_t p = 0; p < m_.particles.size(); ++p) {
         const int mat = m_.particles.material[p];
         if (mat < 0 || mat >= static_cast<int>(m_.materials.size()))
@@ -357,24 +360,14 @@ void MpmSolver<D>::update_stress(double dt) {
             de[2] = m_.axisymmetric ? hoop * dt : 0.0;
             de[4] = de[5] = 0.0;
         }
-        // Jaumann rotation of the stress by the spin W = (L - L^T)/2 dt: s += W s - s W.
-        double* sg = &p.stress[6 * i];
-        double S[3][3] = {{sg[0], sg[3], sg[5]}, {sg[3], sg[1], sg[4]}, {sg[5], sg[4], sg[2]}};
+        // Objective rotation of the stress and the material's tensor state by the spin.
         double W[3][3] = {};
         for (int a = 0; a < D; ++a)
             for (int b = 0; b < D; ++b) W[a][b] = 0.5 * (L[a][b] - L[b][a]) * dt;
-        double R[3][3];
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) {
-                R[a][b] = 0.0;
-                for (int c = 0; c < 3; ++c) R[a][b] += W[a][c] * S[c][b] - S[a][c] * W[c][b];
-            }
-        sg[0] += R[0][0];
-        sg[1] += R[1][1];
-        sg[2] += R[2][2];
-        sg[3] += R[0][1];
-        sg[4] += R[1][2];
-        sg[5] += R[0][2];
+        const Rotation rot = rotation_of_spin(W);
+        rotate_tensor(rot, &p.stress[6 * i]);
+        double* st = p.state.data() + static_cast<std::size_t>(p.state_stride) * i;
+        for (int t = 0; t < tensor_states_[p.material[i]]; ++t) rotate_tensor(rot, st + 6 * t);
         // Deformation gradient, volume and the accumulated strain.
         double Fn[D * D];
         for (int a = 0; a < D; ++a)

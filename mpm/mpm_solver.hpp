@@ -74,6 +74,7 @@ private:
     MpmModel<D>& m_;
     std::vector<Stencil<D>> stencil_;
     std::vector<std::vector<int>> points_of_material_;
+    std::vector<int> tensor_states_;  // per material: symmetric tensors rotated with the stress
     std::vector<std::vector<double>> thread_buffer_;
     std::vector<double> scratch_;
     std::vector<double> external_;  // D per node: gravity and tractions, for the equilibrium measure
