@@ -1,6 +1,7 @@
 #include "io/material_input.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "mpm/modified_cam_clay.hpp"
@@ -37,15 +38,43 @@ void read_hypoplastic(MapReader& m, MaterialInput& mat) {
     mat.min_pressure = m.number_or("min_pressure", 1.0, positive("least shifted mean stress in Pa"));
 }
 
+// A UMAT's own parameters are opaque: PROPS and STATEV as the UMAT's documentation lists
+// them; pilempm needs only the moduli for its stable time step.
+void read_user_material(MapReader& m, MaterialInput& mat) {
+    auto& u = mat.umat;
+    const std::string library = m.text_or("library", "");
+    if (library.empty()) m.fail("library", "the path of the UMAT's shared library (.so)", "none");
+    std::filesystem::path path(library);
+    if (path.is_relative()) path = std::filesystem::path(m.file()).parent_path() / path;
+    if (!std::filesystem::is_regular_file(path))
+        m.fail("library", "an existing shared library (a relative path starts at the case file)", path.string());
+    u.library = path.string();
+    u.symbol = m.text_or("symbol", "");
+    u.name = m.text_or("cmname", "UMAT");
+    u.properties = m.numbers("properties", {"any number", [](double) { return true; }});
+    u.state_variables = m.integer_or("state_variables", 0, 0);
+    if (m.has("initial_state")) {
+        u.initial_state = m.numbers("initial_state", {"any number", [](double) { return true; }});
+        if (static_cast<int>(u.initial_state.size()) > u.state_variables)
+            m.fail("initial_state", "at most state_variables = " + std::to_string(u.state_variables) + " values",
+                   std::to_string(u.initial_state.size()));
+    }
+    u.p_wave_modulus = m.number("p_wave_modulus", positive("the largest constrained modulus K + 4G/3 in Pa"));
+    u.shear_modulus = m.number("shear_modulus", positive("the largest shear modulus in Pa"));
+    u.thread_safe = m.boolean_or("thread_safe", true);
+    mat.friction_angle = m.number_or("friction_angle", 30.0, {"an angle from 0 to 89 deg (for K0)",
+                                                              [](double x) { return x >= 0 && x < 89; }});
+}
+
 }  // namespace
 
 MaterialInput read_material(MapReader m, bool with_density) {
     MaterialInput mat;
     mat.name = m.text_or("name", "");
     if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
-    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "hypoplastic"});
+    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "hypoplastic", "umat"});
     if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
-    if (mat.model != "hypoplastic")
+    if (mat.model != "hypoplastic" && mat.model != "umat")
         mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
     const Expect angle{"an angle from 0 to 89 deg", [](double x) { return x >= 0 && x < 89; }};
     if (mat.model == "modified_cam_clay") {
@@ -66,6 +95,8 @@ MaterialInput read_material(MapReader m, bool with_density) {
         mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
     } else if (mat.model == "hypoplastic") {
         read_hypoplastic(m, mat);
+    } else if (mat.model == "umat") {
+        read_user_material(m, mat);
     } else {
         mat.youngs_modulus = m.number("youngs_modulus", positive("Young's modulus in Pa"));
     }
@@ -101,6 +132,7 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
         p.p_min = m.min_pressure;
         return std::make_unique<mpm::Hypoplastic>(p);
     }
+    if (m.model == "umat") return std::make_unique<mpm::UserMaterial>(m.umat);
     return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
                                               m.cohesion, m.tension_cutoff);
 }

@@ -7,11 +7,12 @@
 #include "io/yaml_reader.hpp"
 #include "mpm/constitutive_model.hpp"
 #include "mpm/hypoplastic.hpp"
+#include "mpm/user_material.hpp"
 
 namespace pilempm::io {
 
 struct MaterialInput {
-    std::string name, model;  // linear_elastic | mohr_coulomb | modified_cam_clay | hypoplastic
+    std::string name, model;  // linear_elastic | mohr_coulomb | modified_cam_clay | hypoplastic | umat
     double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
     double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
     // Modified Cam clay: NCL and unloading slopes, critical state ratio (or friction_angle),
@@ -20,6 +21,8 @@ struct MaterialInput {
     // Hypoplastic (von Wolffersdorff) with intergranular strain (Niemunis & Herle); phi_c,
     // e0 and p_min come from friction_angle, void_ratio and min_pressure.
     mpm::HypoplasticParameters hypo;
+    // A user material (Abaqus UMAT in a shared library); library resolved against the case file.
+    mpm::UserMaterialParameters umat;
     double k0 = -1.0;  // <0: 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
 };
 

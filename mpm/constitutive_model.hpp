@@ -25,6 +25,9 @@ public:
     // stress[6p..6p+5] and state[stride p .. stride p + num_state - 1].
     virtual void update(int count, const int* points, const double* dstrain, double* stress,
                         double* state, int stride) const = 0;
+    // The time at the start of the coming update and its step, s, for rate-dependent models
+    // (user materials are told both); the solver calls it before each update.
+    virtual void set_time(double /*time*/, double /*dt*/) {}
     // Constrained (P-wave) modulus K + 4G/3 and shear modulus, Pa, for the stable time step
     // and the absorbing boundaries (the largest tangent stiffness the model can show).
     virtual double p_wave_modulus() const = 0;

@@ -390,6 +390,7 @@ void MpmSolver<D>::update_stress(double dt) {
     for (std::size_t mat = 0; mat < m_.materials.size(); ++mat) {
         const auto& pts = points_of_material_[mat];
         const int count = static_cast<int>(pts.size());
+        m_.materials[mat]->set_time(time_, dt);
         const int threads = count > kParallelPoints ? omp_get_max_threads() : 1;
 #pragma omp parallel for schedule(static) if (threads > 1)
         for (int t = 0; t < threads; ++t) {

@@ -3,7 +3,7 @@
 # missing. As root it runs apt-get; otherwise it names what to install and fails.
 set -euo pipefail
 
-packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libhdf5-dev libvtk9-dev
+packages=(build-essential gfortran cmake ninja-build pkg-config libeigen3-dev libhdf5-dev libvtk9-dev
           libgmsh-dev libopenmpi-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev
           python3-matplotlib)
 
