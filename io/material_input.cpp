@@ -5,6 +5,7 @@
 
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
+#include "mpm/subloading_cam_clay.hpp"
 
 namespace pilempm::io {
 
@@ -16,11 +17,12 @@ MaterialInput read_material(MapReader m, bool with_density) {
     MaterialInput mat;
     mat.name = m.text_or("name", "");
     if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
-    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay"});
+    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "subloading_cam_clay"});
     if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
     mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
     const Expect angle{"an angle from 0 to 89 deg", [](double x) { return x >= 0 && x < 89; }};
-    if (mat.model == "modified_cam_clay") {
+    const bool cam_clay = mat.model == "modified_cam_clay" || mat.model == "subloading_cam_clay";
+    if (cam_clay) {
         mat.lambda = m.number("lambda", positive("slope of the normal compression line"));
         mat.kappa = m.number("kappa", {"a swelling slope below lambda", [l = mat.lambda](double x) { return x > 0 && x < l; }});
         if (m.has("critical_state_ratio") == m.has("friction_angle"))
@@ -36,6 +38,12 @@ MaterialInput read_material(MapReader m, bool with_density) {
         mat.void_ratio = m.number("void_ratio", positive("initial void ratio"));
         mat.ocr = m.number_or("ocr", 1.0, {"an overconsolidation ratio >= 1", [](double x) { return x >= 1.0; }});
         mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
+        if (mat.model == "subloading_cam_clay") {
+            // No default: a sets how fast the overconsolidated soil reaches the normal surface.
+            mat.subloading_a = m.number("subloading_a", positive("the subloading parameter a of G(rho) = a rho^2"));
+            mat.critical_state_surface = m.choice_or("critical_state_surface", "matsuoka_nakai",
+                                                     {"matsuoka_nakai", "drucker_prager"});
+        }
     } else {
         mat.youngs_modulus = m.number("youngs_modulus", positive("Young's modulus in Pa"));
     }
@@ -63,6 +71,20 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
         p.ocr = m.ocr;
         p.p_min = m.min_pressure;
         return std::make_unique<mpm::ModifiedCamClay>(p);
+    }
+    if (m.model == "subloading_cam_clay") {
+        mpm::SubloadingCamClayParameters p;
+        p.lambda = m.lambda;
+        p.kappa = m.kappa;
+        p.friction_angle = m.friction_angle;  // M in compression = critical_state_ratio
+        p.surface = m.critical_state_surface == "drucker_prager" ? mpm::CriticalStateSurface::DruckerPrager
+                                                                 : mpm::CriticalStateSurface::MatsuokaNakai;
+        p.poisson_ratio = m.poisson_ratio;
+        p.void_ratio = m.void_ratio;
+        p.ocr = m.ocr;
+        p.a = m.subloading_a;
+        p.p_min = m.min_pressure;
+        return std::make_unique<mpm::SubloadingCamClay>(p);
     }
     return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
                                               m.cohesion, m.tension_cutoff);
