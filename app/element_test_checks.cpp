@@ -21,6 +21,9 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
     static const std::map<std::string, Check> table = {
         {"critical_state_drained", critical_state_drained},
         {"undrained_path", undrained_path},
+        {"subloading_critical_state", subloading_critical_state},
+        {"subloading_smooth_transition", subloading_smooth_transition},
+        {"subloading_reduces_to_mcc", subloading_reduces_to_mcc},
     };
     const auto it = table.find(name);
     if (it == table.end()) throw std::invalid_argument("no element-test check named " + name);

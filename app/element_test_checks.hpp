@@ -32,5 +32,8 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
 // Per model family.
 std::vector<coupling::VerificationCheck> critical_state_drained(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> undrained_path(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_critical_state(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_smooth_transition(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_reduces_to_mcc(const ElementTestContext& ctx);
 
 }  // namespace pilempm::app

@@ -28,6 +28,9 @@ struct ElementTestCase : CaseFile {
 inline const std::vector<std::string> element_test_check_names = {
     "critical_state_drained",  // modified Cam clay
     "undrained_path",          // modified Cam clay
+    "subloading_critical_state",     // subloading Cam clay: q / p' = M(theta) at the end
+    "subloading_smooth_transition",  // subloading Cam clay, OCR > 1: no stiffness jump
+    "subloading_reduces_to_mcc",     // subloading Cam clay against modified Cam clay
 };
 
 ElementTestCase read_element_test_case(const std::string& file);
