@@ -51,7 +51,7 @@ SubloadingCamClay::SubloadingCamClay(const SubloadingCamClayParameters& p) : par
     const double s = std::sin(p.friction_angle * std::numbers::pi / 180.0);
     M_c_ = 6.0 * s / (3.0 - s);
     k_mn_ = (9.0 - s * s) / (1.0 - s * s);
-    alpha_ = (3.0 - s) / (3.0 + s);
+    alpha4_ = std::pow((3.0 - s) / (3.0 + s), 4);
     p_floor_ = 1e-3 * p.p_min;
 }
 
@@ -63,17 +63,19 @@ const char* SubloadingCamClay::state_name(int k) const {
 // Matsuoka-Nakai at stress ratio eta and c = cos 3theta: I1 I2 = k I3 with I1 = 3p,
 // I2 = 3p^2 - q^2/3, I3 = p^3 - p q^2/3 + 2 c q^3/27 gives, divided by p^3,
 //   g(eta) = (k - 9) + (1 - k/3) eta^2 + (2 k c / 27) eta^3 = 0.
-// Newton from Sheng et al.'s (2000) fit, which is exact at c = +-1: 3 to 4 iterations.
+// Halley's method from Sheng et al.'s (2000) fit, which is exact at c = +-1: 2 iterations to
+// round-off up to phi = 50 deg.
 double SubloadingCamClay::critical_state_ratio_at(double c) const {
     if (par_.surface == CriticalStateSurface::DruckerPrager) return M_c_;
     c = std::clamp(c, -1.0, 1.0);
-    const double a4 = std::pow(alpha_, 4);
-    double eta = M_c_ * std::pow(2.0 * a4 / (1.0 + a4 - (1.0 - a4) * c), 0.25);
+    const double a4 = alpha4_;
+    double eta = M_c_ * std::sqrt(std::sqrt(2.0 * a4 / (1.0 + a4 - (1.0 - a4) * c)));
     const double A = 2.0 * k_mn_ * c / 27.0, B = 1.0 - k_mn_ / 3.0, C = k_mn_ - 9.0;
-    for (int it = 0; it < 20; ++it) {
-        const double d = (C + eta * eta * (B + A * eta)) / (eta * (2.0 * B + 3.0 * A * eta));
+    for (int it = 0; it < 20; ++it) {  // Halley: the error is cubed each time
+        const double g = C + eta * eta * (B + A * eta), g1 = eta * (2.0 * B + 3.0 * A * eta), g2 = 2.0 * B + 6.0 * A * eta;
+        const double d = 2.0 * g * g1 / (2.0 * g1 * g1 - g * g2);
         eta -= d;
-        if (std::abs(d) < 1e-14 * eta) break;
+        if (std::abs(d) < 1e-5 * eta) break;  // the next error ~ d^3: at round-off
     }
     return eta;
 }
@@ -234,19 +236,27 @@ void SubloadingCamClay::update_point(const double* de, Point& pt) const {
     const double tol = par_.tolerance;
     // Outside the normal surface (a set-up a hair outside, a point pulled into tension):
     // back onto it, as modified Cam clay does; then the subloading surface through the stress.
-    pt.rho = 0.0;
-    if (f(pt) > drift_tolerance(pt)) correct_drift(pt);
-    pt.rho = rho_of_stress(pt.s, pt.pc);
     {
-        // Unloading from the surface: exact hypoelastic step, the surface shrinks to the stress.
-        double ds[6], dpc, drho, deps;
-        if (plastic_rate(pt, de, ds, dpc, drho, deps) <= 0.0) {
-            double s[6];
-            critical_state::hypoelastic_step(pt.s, pt.v, de, par_.kappa, par_.p_min, g_over_k_, s);
-            std::copy(s, s + 6, pt.s);
+        const double p = mean_pressure(pt.s), q = deviator_q(pt.s, p), M = lode(pt.s, p, q).M;
+        pt.rho = 0.0;
+        if (q * q / (M * M) + p * (p - pt.pc) > drift_tolerance(pt)) {
+            correct_drift(pt);
             pt.rho = rho_of_stress(pt.s, pt.pc);
-            return;
+        } else {
+            const double ps = p > 0.0 ? p + q * q / (M * M * p) : 0.0;
+            pt.rho = (par_.lambda - par_.kappa) * std::log(pt.pc / std::max(ps, p_floor_));
         }
+    }
+    // Unloading from the surface: exact hypoelastic step, the surface shrinks to the stress.
+    // On loading the rate at the start is the first stage of the first substep.
+    double ds0[6], dpc0, drho0, deps0;
+    const double dl0 = plastic_rate(pt, de, ds0, dpc0, drho0, deps0);
+    if (dl0 <= 0.0) {
+        double s[6];
+        critical_state::hypoelastic_step(pt.s, pt.v, de, par_.kappa, par_.p_min, g_over_k_, s);
+        std::copy(s, s + 6, pt.s);
+        pt.rho = rho_of_stress(pt.s, pt.pc);
+        return;
     }
     // Modified Euler with local error control (Sloan et al. 2001), as modified Cam clay.
     double T = 0.0, dT = 1.0;
@@ -255,7 +265,16 @@ void SubloadingCamClay::update_point(const double* de, Point& pt) const {
         if (++substeps > 100000 || dT < 1e-12) throw std::runtime_error("subloading Cam clay: substepping did not converge");
         double d[6], ds1[6], ds2[6], dpc1, dpc2, drho1, drho2, deps1, deps2;
         for (int i = 0; i < 6; ++i) d[i] = dT * de[i];
-        const double dl1 = plastic_rate(pt, d, ds1, dpc1, drho1, deps1);
+        double dl1;
+        if (T == 0.0) {  // the rate is homogeneous of degree 1 in the increment
+            dl1 = dT * dl0;
+            for (int i = 0; i < 6; ++i) ds1[i] = dT * ds0[i];
+            dpc1 = dT * dpc0;
+            drho1 = dT * drho0;
+            deps1 = dT * deps0;
+        } else {
+            dl1 = plastic_rate(pt, d, ds1, dpc1, drho1, deps1);
+        }
         Point mid = pt;
         for (int i = 0; i < 6; ++i) mid.s[i] += ds1[i];
         mid.pc = std::max(mid.pc + dpc1, par_.p_min);

@@ -100,7 +100,7 @@ private:
 
     SubloadingCamClayParameters par_;
     double g_over_k_;               // G / K from Poisson's ratio
-    double M_c_, k_mn_, alpha_;     // M in compression; Matsuoka-Nakai I1 I2 / I3; M_e / M_c
+    double M_c_, k_mn_, alpha4_;    // M in compression; Matsuoka-Nakai I1 I2 / I3; (M_e / M_c)^4
     double p_floor_;                // least p_s for rho (zero stress gives a finite rho)
     static constexpr double p_ref_ = 100e3;  // Pa: where p_wave_modulus() is stated
 };
