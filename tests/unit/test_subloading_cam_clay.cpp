@@ -235,6 +235,38 @@ TEST(SubloadingCamClay, CriticalStateInCompressionAndExtension) {
     }
 }
 
+// Oedometer from the K0 state of seed 002 (K0 0.45, sigma'_v 150 kPa): the loading slope in
+// e - ln sigma'_v tends to lambda; unloading starts elastic (slope kappa in e - ln p', no
+// plastic strain); reloading is plastic from its first step.
+TEST(SubloadingCamClay, OedometerLoadingUnloadingReloading) {
+    const SubloadingCamClay model(seed_parameters());
+    const double s0[6] = {-0.45 * 150e3, -0.45 * 150e3, -150e3, 0, 0, 0};
+    std::vector<double> st(4);
+    model.initialise_state(s0, st.data());
+    ElementTest test(model, s0, st);
+    std::vector<ElementRecord> load, unload, reload;
+    test.run({ElementLeg::AxialStress, ElementLeg::LateralStrainZero, 1600e3, 1600}, load);
+    test.run({ElementLeg::AxialStress, ElementLeg::LateralStrainZero, 400e3, 1200}, unload);
+    test.run({ElementLeg::AxialStress, ElementLeg::LateralStrainZero, 1600e3, 1200}, reload);
+    const auto& a = load[load.size() / 2];
+    const auto& b = load.back();
+    const double slope = -(b.state[1] - a.state[1]) / std::log(b.axial_stress / a.axial_stress);
+    RecordProperty("ncl_slope", std::to_string(slope));
+    EXPECT_NEAR(slope, 0.15, 0.01 * 0.15);
+    const auto& u = unload[50];
+    EXPECT_NEAR(u.state[3], b.state[3], 1e-12);  // no plastic strain on the first unloading steps
+    const double kap = -(u.state[1] - b.state[1]) / std::log(u.p / b.p);
+    EXPECT_NEAR(kap, 0.013, 0.01 * 0.013);
+    EXPECT_GT(reload[0].state[3], unload.back().state[3]);  // plastic at once on reloading
+    // Back at 1600 kPa the loop has densified the soil a little (e below the NCL by rho, p_c
+    // above its first-loading value), as subloading models do (cyclic densification).
+    const double gap = b.state[1] - reload.back().state[1];
+    RecordProperty("reload_e_gap", std::to_string(gap));
+    EXPECT_GT(gap, 0.0);
+    EXPECT_LT(gap, 0.1 * (load.front().state[1] - b.state[1]));
+    EXPECT_GT(reload.back().state[2], 0.0);
+}
+
 // Cyclic undrained loading of a normally consolidated point: plastic strain on every
 // reloading, so p' keeps falling cycle after cycle (MCC is elastic inside after the first).
 TEST(SubloadingCamClay, CyclicUndrainedLoadingAccumulatesPorePressure) {
