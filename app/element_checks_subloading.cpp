@@ -97,6 +97,40 @@ std::vector<VerificationCheck> subloading_smooth_transition(const ElementTestCon
                        "rho_end / rho_0 -> 0 (towards the normal surface)")};
 }
 
+// Oedometer loading - unloading (- reloading) from a normally consolidated state: the
+// slope of the second half of the first loading in e - ln sigma'_v is lambda; the first
+// tenth of the unloading is elastic (no plastic strain, slope kappa in e - ln p'); a
+// reloading is plastic well before the previous maximum (an extension-side state after a
+// long unloading reloads elastically at first: the surface is centred on the p' axis).
+std::vector<VerificationCheck> subloading_oedometer(const ElementTestContext& ctx) {
+    ctx.require_model(kModel, "subloading_oedometer");
+    const auto& r = ctx.first_of("oedometer", "subloading_oedometer");
+    const auto& legs = r.input->legs;
+    if (legs.size() < 2 || !(legs[1].axial_target < legs[0].axial_target))
+        throw std::invalid_argument("subloading_oedometer needs an oedometer path that loads, then unloads");
+    const auto& m = ctx.c.material;
+    const auto& path = r.path;
+    const std::size_t n0 = legs[0].steps, n1 = n0 + legs[1].steps / 10;
+    const auto& a = path[n0 / 2];
+    const auto& b = path[n0];
+    const auto& u = path[n1];
+    const double lam = -(b.state[1] - a.state[1]) / std::log(b.axial_stress / a.axial_stress);
+    const double kap = -(u.state[1] - b.state[1]) / std::log(u.p / b.p);
+    std::vector<VerificationCheck> out = {
+        make_check("oedometer_loading_slope", lam, m.lambda, 0.01, true, "-de / d ln sigma'_v -> lambda (NCL)"),
+        make_check("oedometer_unloading_slope", kap, m.kappa, 0.01, true, "-de / d ln p' = kappa (elastic)"),
+        make_check("oedometer_unloading_plastic_strain", u.state[3] - b.state[3], 0.0, 1e-12, false,
+                   "no plastic strain on the first tenth of the unloading")};
+    if (legs.size() > 2) {
+        std::size_t k = n0 + legs[1].steps;
+        const double start = path[k].state[3];
+        while (k + 1 < path.size() && path[k].axial_stress < 0.8 * b.axial_stress) ++k;
+        out.push_back(at_least("oedometer_reloading_plastic_strain_below_80pc", path[k].state[3] - start, 1e-5,
+                               "plastic strain on reloading before 0.8 x the previous sigma'_v (MCC: none)"));
+    }
+    return out;
+}
+
 // The same monotonic triaxial tests with a circular critical state surface (M = M_c) and a = 1e7 (the
 // subloading effect gone within a hair of the normal surface; on it, rho = 0, a plays no
 // part), against ModifiedCamClay of the same parameters: p' and q within 1 % of max |q|.

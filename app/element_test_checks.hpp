@@ -35,5 +35,6 @@ std::vector<coupling::VerificationCheck> undrained_path(const ElementTestContext
 std::vector<coupling::VerificationCheck> subloading_critical_state(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> subloading_smooth_transition(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> subloading_reduces_to_mcc(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_oedometer(const ElementTestContext& ctx);
 
 }  // namespace pilempm::app
