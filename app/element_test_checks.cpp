@@ -29,6 +29,10 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
         {"undrained_path", undrained_path},
         {"critical_void_ratio", critical_void_ratio},
         {"isotropic_compression_line", isotropic_compression_line},
+        {"subloading_critical_state", subloading_critical_state},
+        {"subloading_smooth_transition", subloading_smooth_transition},
+        {"subloading_reduces_to_mcc", subloading_reduces_to_mcc},
+        {"subloading_oedometer", subloading_oedometer},
     };
     const auto it = table.find(name);
     if (it == table.end()) throw std::invalid_argument("no element-test check named " + name);

@@ -37,5 +37,9 @@ std::vector<coupling::VerificationCheck> critical_state_drained(const ElementTes
 std::vector<coupling::VerificationCheck> undrained_path(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> critical_void_ratio(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> isotropic_compression_line(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_critical_state(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_smooth_transition(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_reduces_to_mcc(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> subloading_oedometer(const ElementTestContext& ctx);
 
 }  // namespace pilempm::app

@@ -31,6 +31,10 @@ inline const std::vector<std::string> element_test_check_names = {
     "undrained_path",          // modified Cam clay
     "critical_void_ratio",         // hypoplastic
     "isotropic_compression_line",  // hypoplastic
+    "subloading_critical_state",     // subloading Cam clay: q / p' = M(theta) at the end
+    "subloading_smooth_transition",  // subloading Cam clay, OCR > 1: no stiffness jump
+    "subloading_reduces_to_mcc",     // subloading Cam clay against modified Cam clay
+    "subloading_oedometer",          // subloading Cam clay: NCL slope, elastic unloading
 };
 
 ElementTestCase read_element_test_case(const std::string& file);

@@ -6,6 +6,7 @@
 
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
+#include "mpm/subloading_cam_clay.hpp"
 
 namespace pilempm::io {
 
@@ -72,12 +73,14 @@ MaterialInput read_material(MapReader m, bool with_density) {
     MaterialInput mat;
     mat.name = m.text_or("name", "");
     if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
-    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "hypoplastic", "umat"});
+    mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "subloading_cam_clay",
+                                   "hypoplastic", "umat"});
     if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
     if (mat.model != "hypoplastic" && mat.model != "umat")
         mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
     const Expect angle{"an angle from 0 to 89 deg", [](double x) { return x >= 0 && x < 89; }};
-    if (mat.model == "modified_cam_clay") {
+    const bool cam_clay = mat.model == "modified_cam_clay" || mat.model == "subloading_cam_clay";
+    if (cam_clay) {
         mat.lambda = m.number("lambda", positive("slope of the normal compression line"));
         mat.kappa = m.number("kappa", {"a swelling slope below lambda", [l = mat.lambda](double x) { return x > 0 && x < l; }});
         if (m.has("critical_state_ratio") == m.has("friction_angle"))
@@ -93,6 +96,12 @@ MaterialInput read_material(MapReader m, bool with_density) {
         mat.void_ratio = m.number("void_ratio", positive("initial void ratio"));
         mat.ocr = m.number_or("ocr", 1.0, {"an overconsolidation ratio >= 1", [](double x) { return x >= 1.0; }});
         mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
+        if (mat.model == "subloading_cam_clay") {
+            // No default: a sets how fast the overconsolidated soil reaches the normal surface.
+            mat.subloading_a = m.number("subloading_a", positive("the subloading parameter a of G(rho) = a rho^2"));
+            mat.critical_state_surface = m.choice_or("critical_state_surface", "matsuoka_nakai",
+                                                     {"matsuoka_nakai", "drucker_prager"});
+        }
     } else if (mat.model == "hypoplastic") {
         read_hypoplastic(m, mat);
     } else if (mat.model == "umat") {
@@ -133,11 +142,27 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
         return std::make_unique<mpm::Hypoplastic>(p);
     }
     if (m.model == "umat") return std::make_unique<mpm::UserMaterial>(m.umat);
+    if (m.model == "subloading_cam_clay") {
+        mpm::SubloadingCamClayParameters p;
+        p.lambda = m.lambda;
+        p.kappa = m.kappa;
+        p.friction_angle = m.friction_angle;  // M in compression = critical_state_ratio
+        p.surface = m.critical_state_surface == "drucker_prager" ? mpm::CriticalStateSurface::DruckerPrager
+                                                                 : mpm::CriticalStateSurface::MatsuokaNakai;
+        p.poisson_ratio = m.poisson_ratio;
+        p.void_ratio = m.void_ratio;
+        p.ocr = m.ocr;
+        p.a = m.subloading_a;
+        p.p_min = m.min_pressure;
+        return std::make_unique<mpm::SubloadingCamClay>(p);
+    }
     return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
                                               m.cohesion, m.tension_cutoff);
 }
 
-bool has_void_ratio(const MaterialInput& m) { return m.model == "modified_cam_clay" || m.model == "hypoplastic"; }
+bool has_void_ratio(const MaterialInput& m) {
+    return m.model == "modified_cam_clay" || m.model == "subloading_cam_clay" || m.model == "hypoplastic";
+}
 
 double k0_of(const MaterialInput& m) {
     if (m.k0 > 0.0) return m.k0;

@@ -12,10 +12,11 @@
 namespace pilempm::io {
 
 struct MaterialInput {
-    std::string name, model;  // linear_elastic | mohr_coulomb | modified_cam_clay | hypoplastic | umat
+    // linear_elastic | mohr_coulomb | modified_cam_clay | subloading_cam_clay | hypoplastic | umat
+    std::string name, model;
     double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
     double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
-    // Modified Cam clay: NCL and unloading slopes, critical state ratio (or friction_angle),
+    // Modified (and subloading) Cam clay: NCL and unloading slopes, critical state ratio (or friction_angle),
     // initial void ratio, OCR, the stiffness floor.
     double lambda = 0.0, kappa = 0.0, critical_state_ratio = 0.0, void_ratio = 0.0, ocr = 1.0, min_pressure = 1e3;
     // Hypoplastic (von Wolffersdorff) with intergranular strain (Niemunis & Herle); phi_c,
@@ -23,6 +24,10 @@ struct MaterialInput {
     mpm::HypoplasticParameters hypo;
     // A user material (Abaqus UMAT in a shared library); library resolved against the case file.
     mpm::UserMaterialParameters umat;
+    // Subloading Cam clay besides: a of G(rho) = a rho^2 (required) and the shape of the
+    // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager).
+    double subloading_a = 0.0;
+    std::string critical_state_surface = "matsuoka_nakai";
     double k0 = -1.0;  // <0: 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
 };
 

@@ -4,22 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mpm/critical_state_common.hpp"
+
 namespace pilempm::mpm {
 
-namespace {
-
-double mean_pressure(const double* s) { return -(s[0] + s[1] + s[2]) / 3.0; }  // compression +
-
-double deviator_q(const double* s, double p) {
-    const double a = s[0] + p, b = s[1] + p, c = s[2] + p;
-    return std::sqrt(1.5 * (a * a + b * b + c * c + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
-}
-
-double norm6(const double* s) {
-    return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
-}
-
-}  // namespace
+using critical_state::deviator_q;
+using critical_state::mean_pressure;
+using critical_state::norm6;
 
 ModifiedCamClay::ModifiedCamClay(const CamClayParameters& p) : par_(p) {
     if (!(p.lambda > p.kappa) || !(p.kappa > 0.0))
@@ -29,7 +20,7 @@ ModifiedCamClay::ModifiedCamClay(const CamClayParameters& p) : par_(p) {
         throw std::invalid_argument("modified Cam clay: -1 < nu < 0.5");
     if (!(p.void_ratio > 0.0) || !(p.ocr >= 1.0) || !(p.p_min > 0.0) || !(p.tolerance > 0.0))
         throw std::invalid_argument("modified Cam clay: e > 0, OCR >= 1, p_min > 0, tolerance > 0");
-    g_over_k_ = 3.0 * (1.0 - 2.0 * p.poisson_ratio) / (2.0 * (1.0 + p.poisson_ratio));
+    g_over_k_ = critical_state::shear_to_bulk(p.poisson_ratio);
 }
 
 double ModifiedCamClay::yield_function(const double* s, double pc) const {
@@ -37,7 +28,7 @@ double ModifiedCamClay::yield_function(const double* s, double pc) const {
     return q * q / (par_.M * par_.M) + p * (p - pc);
 }
 
-double ModifiedCamClay::bulk(double p, double v) const { return v * std::max(p, par_.p_min) / par_.kappa; }
+double ModifiedCamClay::bulk(double p, double v) const { return critical_state::bulk_modulus(p, v, par_.kappa, par_.p_min); }
 
 void ModifiedCamClay::initialise_state(const double* stress, double* state) const {
     const double p = std::max(mean_pressure(stress), par_.p_min), q = deviator_q(stress, mean_pressure(stress));
@@ -56,20 +47,9 @@ double ModifiedCamClay::p_wave_modulus_at(const double* stress, const double* st
     return K * (1.0 + 4.0 / 3.0 * g_over_k_);
 }
 
-// Hypoelastic step with the volumetric law integrated exactly (p grows as exp(-v de_v /
-// kappa) above p_min) and the shear modulus of the secant bulk modulus.
+// Hypoelastic step (critical_state_common.hpp); the hardening variable is unchanged.
 void ModifiedCamClay::elastic_step(const Point& in, const double* de, Point& out) const {
-    const double p = mean_pressure(in.s), dev = de[0] + de[1] + de[2];
-    const double pe = std::max(p, par_.p_min);
-    double K = bulk(p, in.v);
-    if (std::abs(dev) > 1e-14) {
-        const double p_new = pe * std::exp(-in.v * dev / par_.kappa) + (p - pe);
-        K = -(p_new - p) / dev;
-    }
-    const double G = g_over_k_ * K;
-    const double mean_de = dev / 3.0;
-    for (int i = 0; i < 3; ++i) out.s[i] = in.s[i] + K * dev + 2.0 * G * (de[i] - mean_de);
-    for (int i = 3; i < 6; ++i) out.s[i] = in.s[i] + G * de[i];  // engineering shear
+    critical_state::hypoelastic_step(in.s, in.v, de, par_.kappa, par_.p_min, g_over_k_, out.s);
     out.pc = in.pc;
     out.v = in.v;
 }
@@ -89,17 +69,11 @@ ModifiedCamClay::Gradient ModifiedCamClay::gradient(const Point& pt) const {
     const double c = 3.0 / (par_.M * par_.M);
     for (int i = 0; i < 3; ++i) g.n[i] = -(2.0 * g.p - pt.pc) / 3.0 + c * (pt.s[i] + g.p);
     for (int i = 3; i < 6; ++i) g.n[i] = 2.0 * c * pt.s[i];
-    elastic_tangent(g.K, g.G, g.n, g.Dn);
+    critical_state::elastic_tangent(g.K, g.G, g.n, g.Dn);
     g.nDn = 0.0;
     for (int i = 0; i < 6; ++i) g.nDn += g.n[i] * g.Dn[i];
     g.hard = pt.pc * pt.v * (2.0 * g.p - pt.pc) / (par_.lambda - par_.kappa);
     return g;
-}
-
-void ModifiedCamClay::elastic_tangent(double K, double G, const double* x, double* y) {
-    const double tr = (K - 2.0 / 3.0 * G) * (x[0] + x[1] + x[2]);
-    for (int i = 0; i < 3; ++i) y[i] = tr + 2.0 * G * x[i];
-    for (int i = 3; i < 6; ++i) y[i] = G * x[i];
 }
 
 // Continuum tangent on the yield surface: dsigma = De (de - dl n), with the multiplier from
@@ -107,7 +81,7 @@ void ModifiedCamClay::elastic_tangent(double K, double G, const double* x, doubl
 void ModifiedCamClay::plastic_rate(const Point& pt, const double* de, double* ds, double& dpc) const {
     const Gradient g = gradient(pt);
     double Dde[6];
-    elastic_tangent(g.K, g.G, de, Dde);
+    critical_state::elastic_tangent(g.K, g.G, de, Dde);
     double nDde = 0.0;
     for (int i = 0; i < 6; ++i) nDde += g.n[i] * Dde[i];
     const double dl = std::max(0.0, nDde / (g.nDn + g.p * g.hard));

@@ -53,7 +53,6 @@ private:
     };
     struct Gradient;
     Gradient gradient(const Point& pt) const;
-    static void elastic_tangent(double K, double G, const double* engineering_strain, double* stress);
     void update_point(const double* de, Point& pt) const;
     void elastic_step(const Point& in, const double* de, Point& out) const;
     // Elasto-plastic tangent increment of stress and p_c for the strain increment de.

@@ -10,6 +10,7 @@
 #include "mpm/hypoplastic.hpp"
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
+#include "mpm/subloading_cam_clay.hpp"
 
 using namespace pilempm::mpm;
 
@@ -72,9 +73,18 @@ void BM_StressUpdateHypoplasticSmallIncrement(benchmark::State& s) {
     run(s, model, 100e3, 0.015);
 }
 
+// Matsuoka-Nakai surface (the Lode-angle solve is part of the cost), a = 2000, OCR 2.
+void BM_StressUpdateSubloadingCamClay(benchmark::State& s) {
+    SubloadingCamClayParameters p;
+    p.ocr = 2.0;
+    const SubloadingCamClay model(p);
+    run(s, model, 100e3);
+}
+
 }  // namespace
 
 BENCHMARK(BM_StressUpdateHypoplastic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateHypoplasticSmallIncrement)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateMohrCoulomb)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateModifiedCamClay)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateSubloadingCamClay)->Unit(benchmark::kMillisecond);

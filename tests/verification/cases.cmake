@@ -25,7 +25,10 @@ pilempm_case_test(verify_mpm_stress_noise_cpdi cases/verification/mpm-stress-noi
 pilempm_case_test(verify_mpm_k0_initial_stress cases/verification/mpm-k0-initial-stress.yaml verification)
 pilempm_case_test(verify_mpm_strip_footing cases/verification/mpm-strip-footing.yaml verification)
 pilempm_case_test(verify_mpm_k0_cam_clay cases/verification/mpm-k0-cam-clay.yaml verification)
+pilempm_case_test(verify_mpm_k0_subloading_cam_clay cases/verification/mpm-k0-subloading-cam-clay.yaml verification)
 # Soil constitutive models in element tests (issue 5).
 pilempm_case_test(verify_element_test_modified_cam_clay cases/element-tests/modified-cam-clay-fontainebleau.yaml verification)
 pilempm_case_test(verify_element_test_hypoplastic cases/element-tests/hypoplastic-schlabendorfer.yaml verification)
 pilempm_case_test(verify_mpm_k0_hypoplastic cases/verification/mpm-k0-hypoplastic.yaml verification)
+pilempm_case_test(verify_element_test_subloading_cam_clay cases/element-tests/subloading-cam-clay-fontainebleau.yaml verification)
+pilempm_case_test(verify_element_test_subloading_cam_clay_ocr4 cases/element-tests/subloading-cam-clay-fontainebleau-ocr4.yaml verification)
