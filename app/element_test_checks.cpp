@@ -21,6 +21,8 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
     static const std::map<std::string, Check> table = {
         {"critical_state_drained", critical_state_drained},
         {"undrained_path", undrained_path},
+        {"small_strain_stiffness_decay", small_strain_stiffness_decay},
+        {"e50_and_failure", e50_and_failure},
     };
     const auto it = table.find(name);
     if (it == table.end()) throw std::invalid_argument("no element-test check named " + name);

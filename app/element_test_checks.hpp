@@ -32,5 +32,7 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
 // Per model family.
 std::vector<coupling::VerificationCheck> critical_state_drained(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> undrained_path(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> small_strain_stiffness_decay(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> e50_and_failure(const ElementTestContext& ctx);
 
 }  // namespace pilempm::app

@@ -28,6 +28,8 @@ struct ElementTestCase : CaseFile {
 inline const std::vector<std::string> element_test_check_names = {
     "critical_state_drained",  // modified Cam clay
     "undrained_path",          // modified Cam clay
+    "small_strain_stiffness_decay",  // hardening soil small
+    "e50_and_failure",               // hardening soil small
 };
 
 ElementTestCase read_element_test_case(const std::string& file);

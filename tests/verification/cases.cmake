@@ -27,3 +27,4 @@ pilempm_case_test(verify_mpm_strip_footing cases/verification/mpm-strip-footing.
 pilempm_case_test(verify_mpm_k0_cam_clay cases/verification/mpm-k0-cam-clay.yaml verification)
 # Soil constitutive models in element tests (issue 5).
 pilempm_case_test(verify_element_test_modified_cam_clay cases/element-tests/modified-cam-clay-fontainebleau.yaml verification)
+pilempm_case_test(verify_element_test_hardening_soil_small cases/element-tests/hardening-soil-small-north-sea-dense-sand.yaml verification)
