@@ -12,7 +12,7 @@ namespace pilempm::mpm {
 namespace {
 
 constexpr double kA = 0.385;  // Benz's G_s / G0 = 1 / (1 + a gamma / gamma_0.7), a = 0.385
-constexpr double kCorner = 1e-6;  // principal stresses closer than this x (s1 - s3) coincide
+constexpr double kCorner = 0.05;  // width of the corner blend, x (s1 - s3)
 
 // Contraction of two symmetric tensors stored as [xx yy zz xy yz zx] with tensor shear.
 double ddot(const double* a, const double* b) {
@@ -40,18 +40,27 @@ void apply_elastic(double lam, double G, const double* de, double* ds) {
 struct HardeningSoilSmall::Principal {
     double s[3];
     double v[3][3];
-    // sum_i c_i v_i v_i^T as [xx yy zz xy yz zx]; at a corner the coefficients of the
-    // coinciding principal stresses are averaged, so the result does not depend on the
-    // arbitrary eigenvectors there (Koiter's rule with equal multipliers).
+    // sum_i c_i v_i v_i^T as [xx yy zz xy yz zx]. Near a corner (triaxial compression
+    // s2 = s3, extension s1 = s2) the coefficients of the two close principal stresses are
+    // blended towards their mean, fully at the corner (Koiter's rule with equal
+    // multipliers, independent of the arbitrary eigenvectors there), linearly over a band
+    // of kCorner (s1 - s3): a gradient continuous across the corner lets the substepping
+    // follow a return onto the edge instead of chattering between its two sides.
     void assemble(double c0, double c1, double c2, double* out) const {
         double c[3] = {c0, c1, c2};
         const double span = s[0] - s[2];
-        if (span <= 1e-12 * (std::abs(s[0]) + std::abs(s[2])) || span == 0.0) {
+        if (!(span > 1e-12 * (std::abs(s[0]) + std::abs(s[2])))) {
             c[0] = c[1] = c[2] = (c0 + c1 + c2) / 3.0;
-        } else if (s[1] - s[2] <= kCorner * span) {
-            c[1] = c[2] = 0.5 * (c1 + c2);  // triaxial compression corner
-        } else if (s[0] - s[1] <= kCorner * span) {
-            c[0] = c[1] = 0.5 * (c0 + c1);  // triaxial extension corner
+        } else {
+            const double wc = 0.5 * std::max(0.0, 1.0 - (s[1] - s[2]) / (kCorner * span));
+            const double we = 0.5 * std::max(0.0, 1.0 - (s[0] - s[1]) / (kCorner * span));
+            if (wc > 0.0) {
+                c[1] = (1.0 - wc) * c1 + wc * c2;
+                c[2] = wc * c1 + (1.0 - wc) * c2;
+            } else if (we > 0.0) {
+                c[0] = (1.0 - we) * c0 + we * c1;
+                c[1] = we * c0 + (1.0 - we) * c1;
+            }
         }
         for (int k = 0; k < 6; ++k) out[k] = 0.0;
         for (int i = 0; i < 3; ++i) {
@@ -322,7 +331,7 @@ void HardeningSoilSmall::elastic_step(const Point& in, const double* de, double 
 // of {shear, cap} whose multipliers are all positive (Koiter), none when unloading. False:
 // outside the hardening laws' domain (near the apex).
 bool HardeningSoilSmall::plastic_rate(const Point& pt, const double* Dde, double ratio, double* ds, double& dgp,
-                                      double& dpp) const {
+                                      double& dpp, int& candidates) const {
     const Surfaces S = surfaces(pt, true);
     if (!S.valid) return false;
     double lam, G, Dms[6], Dmc[6];
@@ -330,7 +339,11 @@ bool HardeningSoilSmall::plastic_rate(const Point& pt, const double* Dde, double
     apply_elastic(lam, G, S.ms, Dms);
     apply_elastic(lam, G, S.nc, Dmc);
     const double tol = 10.0 * par_.tolerance;
-    const bool on_s = S.fs >= -tol * S.scale, on_c = S.fc >= -tol * std::max(pt.pp, par_.p_min);
+    // The surfaces the stress lies on; given (>= 0), those of the substep's first stage, so
+    // that the midpoint stage, a little inside a curved surface, still follows it.
+    if (candidates < 0)
+        candidates = (S.fs >= -tol * S.scale ? 1 : 0) | (S.fc >= -tol * std::max(pt.pp, par_.p_min) ? 2 : 0);
+    const bool on_s = candidates & 1, on_c = candidates & 2;
     const double bs = ddot(S.ns, Dde), bc = ddot(S.nc, Dde);
     const double Ass = ddot(S.ns, Dms) + S.Hs, Acc = ddot(S.nc, Dmc) + S.Hc;
     const double Asc = ddot(S.ns, Dmc), Acs = ddot(S.nc, Dms);
@@ -447,12 +460,13 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) co
         // plastic flow is exactly the elastic step (no jump where a surface is touched).
         elastic_step(pt, d, ratio, trial);
         for (int i = 0; i < 6; ++i) Dde[i] = trial.t[i] - pt.t[i];
-        if (!plastic_rate(pt, Dde, ratio, ds1, dg1, dp1)) return false;
+        int candidates = -1;
+        if (!plastic_rate(pt, Dde, ratio, ds1, dg1, dp1, candidates)) return false;
         Point mid = pt;
         for (int i = 0; i < 6; ++i) mid.t[i] += ds1[i];
         mid.gp += dg1;
         mid.pp = std::max(mid.pp + dp1, a_ + par_.p_min);
-        if (!plastic_rate(mid, Dde, ratio, ds2, dg2, dp2)) return false;
+        if (!plastic_rate(mid, Dde, ratio, ds2, dg2, dp2, candidates)) return false;
         Point next = pt;
         double diff[6];
         for (int i = 0; i < 6; ++i) {

@@ -93,7 +93,8 @@ private:
     void elastic_step(const Point& in, const double* de, double ratio, Point& out) const;
     Surfaces surfaces(const Point& pt, bool with_gradients) const;
     double yield_max(const Point& pt) const;  // max of f_s / scale and f_c / p_p (normalised)
-    bool plastic_rate(const Point& pt, const double* Dde, double ratio, double* ds, double& dgp, double& dpp) const;
+    bool plastic_rate(const Point& pt, const double* Dde, double ratio, double* ds, double& dgp, double& dpp,
+                      int& candidates) const;
     void correct_drift(Point& pt, double ratio) const;
     bool integrate(Point& pt, const double* de, double ratio) const;  // false: leave to the fallback
     void fallback(Point& pt, const double* de, double ratio) const;

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <vector>
 
+#include "mpm/hardening_soil_small.hpp"
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
 
@@ -50,7 +51,17 @@ void BM_StressUpdateModifiedCamClay(benchmark::State& s) {
     run(s, model, 100e3);
 }
 
+// Seed 001, Table 2, D_R = 99 %: the shear surface and the cap both load in this path.
+void BM_StressUpdateHardeningSoilSmall(benchmark::State& s) {
+    HardeningSoilSmallParameters p;
+    p.c = 1e3;
+    p.psi = 1.0;
+    const HardeningSoilSmall model(p);
+    run(s, model, 100e3);
+}
+
 }  // namespace
 
 BENCHMARK(BM_StressUpdateMohrCoulomb)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateModifiedCamClay)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateHardeningSoilSmall)->Unit(benchmark::kMillisecond);
