@@ -33,6 +33,8 @@ std::vector<coupling::VerificationCheck> element_test_checks(const std::string& 
         {"subloading_smooth_transition", subloading_smooth_transition},
         {"subloading_reduces_to_mcc", subloading_reduces_to_mcc},
         {"subloading_oedometer", subloading_oedometer},
+        {"small_strain_stiffness_decay", small_strain_stiffness_decay},
+        {"e50_and_failure", e50_and_failure},
     };
     const auto it = table.find(name);
     if (it == table.end()) throw std::invalid_argument("no element-test check named " + name);

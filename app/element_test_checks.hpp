@@ -41,5 +41,7 @@ std::vector<coupling::VerificationCheck> subloading_critical_state(const Element
 std::vector<coupling::VerificationCheck> subloading_smooth_transition(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> subloading_reduces_to_mcc(const ElementTestContext& ctx);
 std::vector<coupling::VerificationCheck> subloading_oedometer(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> small_strain_stiffness_decay(const ElementTestContext& ctx);
+std::vector<coupling::VerificationCheck> e50_and_failure(const ElementTestContext& ctx);
 
 }  // namespace pilempm::app

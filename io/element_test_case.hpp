@@ -35,6 +35,8 @@ inline const std::vector<std::string> element_test_check_names = {
     "subloading_smooth_transition",  // subloading Cam clay, OCR > 1: no stiffness jump
     "subloading_reduces_to_mcc",     // subloading Cam clay against modified Cam clay
     "subloading_oedometer",          // subloading Cam clay: NCL slope, elastic unloading
+    "small_strain_stiffness_decay",  // hardening soil small
+    "e50_and_failure",               // hardening soil small
 };
 
 ElementTestCase read_element_test_case(const std::string& file);

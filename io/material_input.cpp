@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "mpm/hardening_soil_small.hpp"
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
 #include "mpm/subloading_cam_clay.hpp"
@@ -74,7 +75,7 @@ MaterialInput read_material(MapReader m, bool with_density) {
     mat.name = m.text_or("name", "");
     if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
     mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "subloading_cam_clay",
-                                   "hypoplastic", "umat"});
+                                   "hypoplastic", "hardening_soil_small", "umat"});
     if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
     if (mat.model != "hypoplastic" && mat.model != "umat")
         mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
@@ -106,6 +107,26 @@ MaterialInput read_material(MapReader m, bool with_density) {
         read_hypoplastic(m, mat);
     } else if (mat.model == "umat") {
         read_user_material(m, mat);
+    } else if (mat.model == "hardening_soil_small") {
+        mat.e50_ref = m.number("e50_ref", positive("secant triaxial stiffness E50 at p_ref in Pa"));
+        mat.eoed_ref = m.number("eoed_ref", positive("oedometric stiffness at p_ref in Pa"));
+        mat.eur_ref = m.number("eur_ref", {"an unloading-reloading stiffness in Pa above e50_ref",
+                                           [e = mat.e50_ref](double x) { return x > e; }});
+        mat.g0_ref = m.number("g0_ref", {"a small-strain shear modulus in Pa >= eur_ref / (2 (1 + poisson_ratio))",
+                                         [e = mat.eur_ref, nu = mat.poisson_ratio](double x) { return x >= e / (2.0 * (1.0 + nu)); }});
+        mat.gamma_07 = m.number("gamma_07", in_open_range(0.0, 0.1, "the shear strain where G = 0.722 G0"));
+        mat.stiffness_exponent = m.number("stiffness_exponent", {"a power m from 0 to 1", [](double x) { return x >= 0 && x <= 1; }});
+        mat.reference_pressure = m.number_or("reference_pressure", 100e3, positive("reference pressure in Pa"));
+        mat.friction_angle = m.number("friction_angle", {"an angle above 0 and below 89 deg", [](double x) { return x > 0 && x < 89; }});
+        mat.dilation_angle = m.number_or("dilation_angle", 0.0, {"an angle from 0 to the friction angle",
+                                                                 [phi = mat.friction_angle](double x) { return x >= 0 && x <= phi; }});
+        mat.cohesion = m.number_or("cohesion", 0.0, non_negative("cohesion in Pa"));
+        mat.failure_ratio = m.number_or("failure_ratio", 0.9, in_open_range(0.0, 1.0, "R_f = q_f / q_a"));
+        const double s = sin_deg(mat.friction_angle);
+        mat.k0_nc = m.number_or("k0_nc", 1.0 - s, {"K0 of normal consolidation between (1 - sin phi) / (1 + sin phi) and 1",
+                                                    [s](double x) { return x > (1.0 - s) / (1.0 + s) && x < 1.0; }});
+        mat.ocr = m.number_or("ocr", 1.0, {"an overconsolidation ratio >= 1", [](double x) { return x >= 1.0; }});
+        mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
     } else {
         mat.youngs_modulus = m.number("youngs_modulus", positive("Young's modulus in Pa"));
     }
@@ -123,6 +144,25 @@ MaterialInput read_material(MapReader m, bool with_density) {
 
 std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialInput& m) {
     if (m.model == "linear_elastic") return std::make_unique<mpm::LinearElastic>(m.youngs_modulus, m.poisson_ratio);
+    if (m.model == "hardening_soil_small") {
+        mpm::HardeningSoilSmallParameters p;
+        p.E50_ref = m.e50_ref;
+        p.Eoed_ref = m.eoed_ref;
+        p.Eur_ref = m.eur_ref;
+        p.nu_ur = m.poisson_ratio;
+        p.G0_ref = m.g0_ref;
+        p.gamma_07 = m.gamma_07;
+        p.m = m.stiffness_exponent;
+        p.p_ref = m.reference_pressure;
+        p.phi = m.friction_angle;
+        p.c = m.cohesion;
+        p.psi = m.dilation_angle;
+        p.R_f = m.failure_ratio;
+        p.K0_nc = m.k0_nc;
+        p.ocr = m.ocr;
+        p.p_min = m.min_pressure;
+        return std::make_unique<mpm::HardeningSoilSmall>(p);
+    }
     if (m.model == "modified_cam_clay") {
         mpm::CamClayParameters p;
         p.lambda = m.lambda;
@@ -166,6 +206,7 @@ bool has_void_ratio(const MaterialInput& m) {
 
 double k0_of(const MaterialInput& m) {
     if (m.k0 > 0.0) return m.k0;
+    if (m.model == "hardening_soil_small" && m.k0_nc > 0.0) return m.k0_nc;
     if (m.model != "linear_elastic") return 1.0 - sin_deg(m.friction_angle);
     return m.poisson_ratio / (1.0 - m.poisson_ratio);
 }

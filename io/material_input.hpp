@@ -12,7 +12,8 @@
 namespace pilempm::io {
 
 struct MaterialInput {
-    // linear_elastic | mohr_coulomb | modified_cam_clay | subloading_cam_clay | hypoplastic | umat
+    // linear_elastic | mohr_coulomb | modified_cam_clay | subloading_cam_clay | hypoplastic |
+    // hardening_soil_small | umat
     std::string name, model;
     double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
     double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
@@ -28,7 +29,12 @@ struct MaterialInput {
     // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager).
     double subloading_a = 0.0;
     std::string critical_state_surface = "matsuoka_nakai";
-    double k0 = -1.0;  // <0: 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
+    // Hardening soil small (poisson_ratio is nu_ur; friction, dilation, cohesion as above;
+    // ocr and min_pressure as for Cam clay): stiffnesses in Pa, gamma_0.7, exponent m,
+    // p_ref (Pa), failure ratio R_f, K0 of normal consolidation (<0: 1 - sin phi).
+    double e50_ref = 0.0, eoed_ref = 0.0, eur_ref = 0.0, g0_ref = 0.0, gamma_07 = 0.0, stiffness_exponent = 0.5;
+    double reference_pressure = 100e3, failure_ratio = 0.9, k0_nc = -1.0;
+    double k0 = -1.0;  // <0: k0_nc (HS small), 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
 };
 
 // with_density: MPM materials need one; an element test does not.

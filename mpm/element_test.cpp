@@ -75,21 +75,37 @@ void ElementTest::run(const ElementLeg& leg, std::vector<ElementRecord>& out) {
                 converged = true;
                 break;
             }
-            // Finite-difference Jacobian: the model is a black box here.
-            double J[2][2], rp[2] = {0.0, 0.0};
+            // Central-difference Jacobian: the model is a black box here, and central
+            // differences average a kink at the solution (e.g. a shear surface that is a
+            // cone about the current isotropic stress) instead of taking one side of it.
+            double J[2][2], rp[2] = {0.0, 0.0}, rm[2] = {0.0, 0.0};
             std::vector<double> scratch;
             for (int j = 0; j < 2; ++j) {
-                double xp[2] = {x[0], x[1]};
+                double xp[2] = {x[0], x[1]}, xm[2] = {x[0], x[1]};
                 const double h = 1e-8 + 1e-6 * std::abs(x[j]);
                 xp[j] += h;
+                xm[j] -= h;
                 residual(xp, rp, nullptr, scratch);
-                J[0][j] = (rp[0] - r[0]) / h;
-                J[1][j] = (rp[1] - r[1]) / h;
+                residual(xm, rm, nullptr, scratch);
+                J[0][j] = (rp[0] - rm[0]) / (2.0 * h);
+                J[1][j] = (rp[1] - rm[1]) / (2.0 * h);
             }
             const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
             if (!(std::abs(det) > 0.0)) break;
-            x[0] -= (J[1][1] * r[0] - J[0][1] * r[1]) / det;
-            x[1] -= (-J[1][0] * r[0] + J[0][0] * r[1]) / det;
+            const double dx[2] = {(J[1][1] * r[0] - J[0][1] * r[1]) / det, (-J[1][0] * r[0] + J[0][0] * r[1]) / det};
+            // Backtracking: a model whose response has a vertex at the solution (a cone-shaped
+            // yield surface about the current stress) can make full steps jump across it.
+            const double r_norm = std::max(std::abs(r[0]), std::abs(r[1]));
+            double step = 1.0;
+            for (int ls = 0; ls < 12; ++ls) {
+                const double xt[2] = {x[0] - step * dx[0], x[1] - step * dx[1]};
+                double rt[2] = {0.0, 0.0};
+                residual(xt, rt, nullptr, scratch);
+                if (std::max(std::abs(rt[0]), std::abs(rt[1])) < r_norm) break;
+                step *= 0.5;
+            }
+            x[0] -= step * dx[0];
+            x[1] -= step * dx[1];
         }
         if (!converged && best < 1e-7) {
             x[0] = best_x[0];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mpm/hypoplastic.hpp"
+#include "mpm/hardening_soil_small.hpp"
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
 #include "mpm/subloading_cam_clay.hpp"
@@ -81,6 +82,15 @@ void BM_StressUpdateSubloadingCamClay(benchmark::State& s) {
     run(s, model, 100e3);
 }
 
+// Seed 001, Table 2, D_R = 99 %: the shear surface and the cap both load in this path.
+void BM_StressUpdateHardeningSoilSmall(benchmark::State& s) {
+    HardeningSoilSmallParameters p;
+    p.c = 1e3;
+    p.psi = 1.0;
+    const HardeningSoilSmall model(p);
+    run(s, model, 100e3);
+}
+
 }  // namespace
 
 BENCHMARK(BM_StressUpdateHypoplastic)->Unit(benchmark::kMillisecond);
@@ -88,3 +98,4 @@ BENCHMARK(BM_StressUpdateHypoplasticSmallIncrement)->Unit(benchmark::kMillisecon
 BENCHMARK(BM_StressUpdateMohrCoulomb)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateModifiedCamClay)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateSubloadingCamClay)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateHardeningSoilSmall)->Unit(benchmark::kMillisecond);

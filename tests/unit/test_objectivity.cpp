@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "mpm/hardening_soil_small.hpp"
 #include "mpm/hypoplastic.hpp"
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
@@ -56,6 +57,7 @@ std::vector<Factory> all_models() {
             return std::make_unique<SubloadingCamClay>(p);
         },
         [] { return std::make_unique<Hypoplastic>(HypoplasticParameters{}); },  // with intergranular strain
+        [] { return std::make_unique<HardeningSoilSmall>(HardeningSoilSmallParameters{}); },  // strain history H
     };
 }
 
