@@ -174,7 +174,15 @@ void Hypoplastic::update_point(const double* d, Point& pt) const {
             mid.delta[i] += g1[i];
         }
         mid.e = (1.0 + pt.e) * std::exp(dvol) - 1.0;
-        keep_compressive(mid);
+        if (shifted_mean_pressure(mid.T, par_.p_t) < par_.p_min) {
+            // The grains separate within this substep: the point ends on the floor state,
+            // whatever the path; no error control is needed (or possible) across the reset.
+            keep_compressive(mid);
+            pt = mid;
+            T += dT;
+            dT = std::min(2.0 * dT, 1.0 - T);
+            continue;
+        }
         rate(mid, sub, k2, g2);
         Point next = pt;
         double dk[6], dg[6];

@@ -5,16 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
-#include <memory>
 #include <vector>
 
-#include "mpm/hardening_soil_small.hpp"
-#include "mpm/hypoplastic.hpp"
-#include "mpm/modified_cam_clay.hpp"
-#include "mpm/mohr_coulomb.hpp"
 #include "mpm/objective_rotation.hpp"
-#include "mpm/subloading_cam_clay.hpp"
+#include "soil_models.hpp"
 
 using namespace pilempm::mpm;
 
@@ -40,27 +34,6 @@ void spin(const double* n, double dtheta, double (&W)[3][3]) {
     W[1][2] = -n[0] * dtheta, W[2][1] = n[0] * dtheta;
 }
 
-using Factory = std::function<std::unique_ptr<ConstitutiveModel>()>;
-
-std::vector<Factory> all_models() {
-    return {
-        [] { return std::make_unique<LinearElastic>(50e6, 0.3); },
-        [] { return std::make_unique<MohrCoulomb>(50e6, 0.3, 30.0, 5.0, 1e3, 0.0); },
-        [] {
-            CamClayParameters p;
-            p.ocr = 1.5;
-            return std::make_unique<ModifiedCamClay>(p);
-        },
-        [] {
-            SubloadingCamClayParameters p;
-            p.ocr = 2.0;
-            return std::make_unique<SubloadingCamClay>(p);
-        },
-        [] { return std::make_unique<Hypoplastic>(HypoplasticParameters{}); },  // with intergranular strain
-        [] { return std::make_unique<HardeningSoilSmall>(HardeningSoilSmallParameters{}); },  // strain history H
-    };
-}
-
 // A point loaded by a few increments of axial compression with some shear, so that its
 // stress is anisotropic and its state has evolved.
 struct LoadedPoint {
@@ -80,7 +53,7 @@ LoadedPoint load(const ConstitutiveModel& model) {
 
 TEST(Objectivity, RigidRotationKeepsStressAndTensorStateInvariantsForEveryModel) {
     const double n[3] = {1.0 / std::sqrt(14.0), 2.0 / std::sqrt(14.0), 3.0 / std::sqrt(14.0)};
-    for (const auto& make : all_models()) {
+    for (const auto& make : test_models::all_soil_models()) {
         const auto model = make();
         LoadedPoint pt = load(*model);
         const Invariants s0 = invariants(pt.stress.data());

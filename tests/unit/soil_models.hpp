@@ -1,0 +1,37 @@
+#pragma once
+// Every built-in soil model with representative parameters, for the tests that must hold
+// for all of them (objectivity, robustness at extreme stresses).
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "mpm/hardening_soil_small.hpp"
+#include "mpm/hypoplastic.hpp"
+#include "mpm/modified_cam_clay.hpp"
+#include "mpm/mohr_coulomb.hpp"
+#include "mpm/subloading_cam_clay.hpp"
+
+namespace pilempm::mpm::test_models {
+
+using ModelFactory = std::function<std::unique_ptr<ConstitutiveModel>()>;
+
+inline std::vector<ModelFactory> all_soil_models() {
+    return {
+        [] { return std::make_unique<LinearElastic>(50e6, 0.3); },
+        [] { return std::make_unique<MohrCoulomb>(50e6, 0.3, 30.0, 5.0, 1e3, 0.0); },
+        [] {
+            CamClayParameters p;
+            p.ocr = 1.5;
+            return std::make_unique<ModifiedCamClay>(p);
+        },
+        [] {
+            SubloadingCamClayParameters p;
+            p.ocr = 2.0;
+            return std::make_unique<SubloadingCamClay>(p);
+        },
+        [] { return std::make_unique<Hypoplastic>(HypoplasticParameters{}); },  // with intergranular strain
+        [] { return std::make_unique<HardeningSoilSmall>(HardeningSoilSmallParameters{}); },  // strain history H
+    };
+}
+
+}  // namespace pilempm::mpm::test_models
