@@ -18,6 +18,11 @@ void Grid<D>::allocate() {
     dashpot.assign(D * n, 0.0);
     wall.assign(n, -1);
     wall_friction.assign(n, 0.0);
+    position.resize(D * n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto idx = ijk(static_cast<int>(k));
+        for (int d = 0; d < D; ++d) position[D * k + d] = coordinate(d, idx[d]);
+    }
 }
 
 template <int D>

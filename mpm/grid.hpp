@@ -23,6 +23,7 @@ struct Grid {
     std::vector<double> prescribed;    // D per node: the prescribed velocity (0 for supports)
     std::vector<double> reaction;      // D per node: force the prescription exerted last step, N
     std::vector<double> dashpot;       // D per node, N s/m (absorbing boundaries)
+    std::vector<double> position;      // D per node, m: kept so that hot loops need no ijk()
     // Rigid frictional walls (Coulomb): per node, the wall's axis * 2 + side (-1: none) and
     // the friction coefficient. The material may not move into the wall and slides on it.
     std::vector<int> wall;

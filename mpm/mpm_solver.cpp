@@ -59,9 +59,9 @@ void MpmSolver<D>::velocity_toward_node(const Stencil<D>& s, int k, const double
                                         double* out) const {
     for (int d = 0; d < D; ++d) out[d] = v[d];
     if (!m_.apic) return;
-    const auto ijk = m_.grid.ijk(s.node[k]);
+    const double* xn = &m_.grid.position[D * s.node[k]];
     double dx[D];
-    for (int d = 0; d < D; ++d) dx[d] = m_.grid.coordinate(d, ijk[d]) - s.x[d];
+    for (int d = 0; d < D; ++d) dx[d] = xn[d] - s.x[d];
     for (int d = 0; d < D; ++d)
         for (int e = 0; e < D; ++e) out[d] += C[D * d + e] * dx[e];
 }
