@@ -12,9 +12,15 @@ ElementTestInput read_test(MapReader m, int index, const MaterialInput& material
     t.name = m.text_or("name", t.type + "_" + std::to_string(index + 1));
     // Targets: axial strain (triaxial; negative for extension, alternating for cycles),
     // axial stress (oedometer) or mean stress (isotropic), compression positive.
-    const bool strain = t.type.rfind("triaxial", 0) == 0;
-    const auto targets = m.numbers("path", {strain ? "axial strains (compression +)" : "stresses in Pa (compression +)",
-                                            [strain](double x) { return strain || x > 0.0; }});
+    const bool triaxial = t.type.rfind("triaxial", 0) == 0;
+    // Triaxial tests are strain-controlled unless control: stress, when the targets are
+    // deviator stresses q (Pa, negative in extension), as in a cyclic triaxial test.
+    const bool deviator = triaxial && m.choice_or("control", "strain", {"strain", "stress"}) == "stress";
+    const bool strain = triaxial && !deviator;
+    const auto targets = m.numbers("path", {strain     ? "axial strains (compression +)"
+                                            : deviator ? "deviator stresses q in Pa (extension -)"
+                                                       : "stresses in Pa (compression +)",
+                                            [triaxial](double x) { return triaxial || x > 0.0; }});
     if (targets.empty()) m.fail("path", "at least one target", "an empty list");
     const int steps = m.integer_or("steps_per_leg", 500, 1);
     if (m.has("void_ratio")) {
@@ -25,6 +31,7 @@ ElementTestInput read_test(MapReader m, int index, const MaterialInput& material
         mpm::ElementLeg leg;
         leg.axial_target = target;
         leg.steps = steps;
+        if (deviator) leg.axial = mpm::ElementLeg::Deviator;
         if (t.type == "triaxial_drained") leg.lateral = mpm::ElementLeg::LateralStress;
         else if (t.type == "triaxial_undrained") leg.lateral = mpm::ElementLeg::Undrained;
         else {

@@ -34,8 +34,10 @@ ElementRecord ElementTest::record() const {
 // iteration on the model's response from the state at the start of the step.
 void ElementTest::run(const ElementLeg& leg, std::vector<ElementRecord>& out) {
     if (leg.steps < 1) throw std::invalid_argument("an element-test leg needs at least one step");
-    const double a0 = leg.axial == ElementLeg::AxialStrain ? -strain_[2] : -stress_[2];
     const double r0 = -0.5 * (stress_[0] + stress_[1]);
+    const double a0 = leg.axial == ElementLeg::AxialStrain   ? -strain_[2]
+                      : leg.axial == ElementLeg::AxialStress ? -stress_[2]
+                                                             : -stress_[2] - r0;
     const double scale = std::max({std::abs(stress_[0]), std::abs(stress_[1]), std::abs(stress_[2]), 1e3});
     double guess[2] = {0.0, 0.0};  // last step's strain increments: the next step's start
     for (int n = 1; n <= leg.steps; ++n) {
@@ -47,8 +49,11 @@ void ElementTest::run(const ElementLeg& leg, std::vector<ElementRecord>& out) {
             st_out = state_;
             step(de, s, st_out);
             const double axial = -s[2], lateral = -0.5 * (s[0] + s[1]);
-            r[0] = leg.axial == ElementLeg::AxialStrain ? (-(strain_[2] + x[0]) - target) / 1e-3
-                                                        : (axial - target) / scale;
+            switch (leg.axial) {
+                case ElementLeg::AxialStrain: r[0] = (-(strain_[2] + x[0]) - target) / 1e-3; break;
+                case ElementLeg::AxialStress: r[0] = (axial - target) / scale; break;
+                case ElementLeg::Deviator: r[0] = (axial - lateral - target) / scale; break;
+            }
             switch (leg.lateral) {
                 case ElementLeg::LateralStress: r[1] = (lateral - r0) / scale; break;
                 case ElementLeg::LateralStrainZero: r[1] = x[1] / 1e-3; break;

@@ -12,11 +12,12 @@
 namespace pilempm::mpm {
 
 struct ElementLeg {
-    enum Control { AxialStrain, AxialStress };
+    // Axial strain, axial stress or deviator q = sigma_a - sigma_r (Pa) as the axial target.
+    enum Control { AxialStrain, AxialStress, Deviator };
     enum Lateral { LateralStress, LateralStrainZero, Undrained, LateralStressEqualsAxial };
     Control axial = AxialStrain;
     Lateral lateral = LateralStress;
-    double axial_target = 0.0;  // strain (compression +) or stress (Pa, compression +) at the end
+    double axial_target = 0.0;  // strain, or stress / deviator (Pa), compression +, at the end
     int steps = 100;
 };
 

@@ -9,6 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
+
+#include "mpm/constitutive_model.hpp"
+#include "mpm/element_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,7 +32,7 @@ struct Result {
     std::string err;
 };
 
-Result pilempm(const std::string& args) {
+Result run_pilempm(const std::string& args) {
     const std::string cmd = std::string(PILEMPM_EXECUTABLE) + " " + args + " 2>&1 >/dev/null";
     std::string out;
     FILE* pipe = popen(cmd.c_str(), "r");
@@ -58,7 +62,7 @@ protected:
 
 TEST_F(ElementTestCase, RunsAndWritesThePath) {
     const fs::path f = write_case(dir_, "ok.yaml", kCase);
-    EXPECT_EQ(pilempm("element-test " + f.string() + " --out " + (dir_ / "out").string() + " --quiet").status, 0);
+    EXPECT_EQ(run_pilempm("element-test " + f.string() + " --out " + (dir_ / "out").string() + " --quiet").status, 0);
     EXPECT_TRUE(fs::exists(dir_ / "out" / "triaxial_undrained_1.csv"));
     EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.json"));
 }
@@ -69,7 +73,7 @@ TEST_F(ElementTestCase, BadParameterNamesFileLineAndKey) {
     const fs::path f = write_case(dir_, "bad.yaml", text);
     fs::create_directories(dir_ / "out");
     std::ofstream(dir_ / "out" / "keep.txt") << "old";
-    const Result r = pilempm("element-test " + f.string() + " --out " + (dir_ / "out").string());
+    const Result r = run_pilempm("element-test " + f.string() + " --out " + (dir_ / "out").string());
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("bad.yaml:2"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("material.kappa"), std::string::npos) << r.err;
@@ -79,11 +83,39 @@ TEST_F(ElementTestCase, BadParameterNamesFileLineAndKey) {
 TEST_F(ElementTestCase, UnknownTestTypeAndOtherAnalysesAreRefused) {
     std::string text = kCase;
     text.replace(text.find("triaxial_undrained"), 18, "triaxial_sideways");
-    const Result r = pilempm("element-test " + write_case(dir_, "type.yaml", text).string());
+    const Result r = run_pilempm("element-test " + write_case(dir_, "type.yaml", text).string());
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("tests[0].type"), std::string::npos) << r.err;
-    const Result other = pilempm("element-test " + std::string(PILEMPM_SOURCE_DIR) +
+    const Result other = run_pilempm("element-test " + std::string(PILEMPM_SOURCE_DIR) +
                                  "/cases/verification/mpm-k0-cam-clay.yaml");
     EXPECT_EQ(other.status, 2);
     EXPECT_NE(other.err.find("analysis: mpm"), std::string::npos) << other.err;
+}
+
+// Stress-controlled triaxial legs (control: stress, deviator targets) on linear elasticity:
+// drained, eps_a = q / E; undrained (constant volume), eps_a = q / (3 G). Cyclic legs come
+// back to their start.
+TEST(ElementTestDriver, DeviatorControlledTriaxialMatchesElasticity) {
+    using namespace pilempm::mpm;
+    const double E = 30e6, nu = 0.25, G = E / (2 * (1 + nu));
+    const LinearElastic model(E, nu);
+    const double s0[6] = {-100e3, -100e3, -100e3, 0, 0, 0};
+    for (auto lateral : {ElementLeg::LateralStress, ElementLeg::Undrained}) {
+        ElementTest test(model, s0, {});
+        std::vector<ElementRecord> path;
+        for (double q : {60e3, -40e3, 60e3}) {
+            ElementLeg leg;
+            leg.axial = ElementLeg::Deviator;
+            leg.lateral = lateral;
+            leg.axial_target = q;
+            leg.steps = 10;
+            test.run(leg, path);
+        }
+        const double stiffness = lateral == ElementLeg::LateralStress ? E : 3.0 * G;
+        EXPECT_NEAR(path.back().q, 60e3, 1e-3);
+        EXPECT_NEAR(path.back().axial_strain, 60e3 / stiffness, 1e-12);
+        EXPECT_NEAR(path[9].axial_strain, 60e3 / stiffness, 1e-12);
+        EXPECT_NEAR(path[19].axial_strain, -40e3 / stiffness, 1e-12);
+        if (lateral == ElementLeg::Undrained) EXPECT_NEAR(path.back().volumetric_strain, 0.0, 1e-14);
+    }
 }
