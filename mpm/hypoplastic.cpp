@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mpm/substepping.hpp"
+
 namespace pilempm::mpm {
 
 namespace {
@@ -159,11 +161,11 @@ void Hypoplastic::keep_compressive(Point& pt) const {
 
 void Hypoplastic::update_point(const double* d, Point& pt) const {
     keep_compressive(pt);
-    const double tol = par_.tolerance;
-    double T = 0.0, dT = 1.0;
-    int substeps = 0;
-    while (T < 1.0) {
-        if (++substeps > 100000 || dT < 1e-12) throw std::runtime_error("hypoplastic: substepping did not converge");
+    // Steps below 1e-9 of the increment are taken whatever their error estimate.
+    SubstepClock clock(par_.tolerance, 100000, 1e-12, 1e-9);
+    while (clock.unfinished()) {
+        if (clock.exhausted()) throw std::runtime_error("hypoplastic: substepping did not converge");
+        const double dT = clock.fraction();
         double sub[6], k1[6], k2[6], g1[6] = {}, g2[6] = {};
         for (int i = 0; i < 6; ++i) sub[i] = dT * d[i];
         const double dvol = sub[0] + sub[1] + sub[2];
@@ -179,8 +181,7 @@ void Hypoplastic::update_point(const double* d, Point& pt) const {
             // whatever the path; no error control is needed (or possible) across the reset.
             keep_compressive(mid);
             pt = mid;
-            T += dT;
-            dT = std::min(2.0 * dT, 1.0 - T);
+            clock.accept(0.0);
             continue;
         }
         rate(mid, sub, k2, g2);
@@ -194,12 +195,7 @@ void Hypoplastic::update_point(const double* d, Point& pt) const {
         }
         next.e = mid.e;
         const double scale = std::max(norm(next.T), par_.p_min + par_.p_t);
-        const double err = std::max({norm(dk) / scale, igs_ ? norm(dg) / par_.R_max : 0.0, 1e-16});
-        const double grow = std::clamp(0.9 * std::sqrt(tol / err), 0.1, 2.0);
-        if (err > tol && dT > 1e-9) {
-            dT *= grow;
-            continue;
-        }
+        if (!clock.accept(std::max(norm(dk) / scale, igs_ ? norm(dg) / par_.R_max : 0.0))) continue;
         keep_compressive(next);
         if (igs_) {  // |delta| <= R_max holds for the exact rate; keep it under round-off
             const double dn = norm(next.delta);
@@ -207,8 +203,6 @@ void Hypoplastic::update_point(const double* d, Point& pt) const {
                 for (int i = 0; i < 6; ++i) next.delta[i] *= par_.R_max / dn;
         }
         pt = next;
-        T += dT;
-        dT = std::min(dT * grow, 1.0 - T);
     }
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mpm/substepping.hpp"
+
 #include "mpm/critical_state_common.hpp"
 
 namespace pilempm::mpm {
@@ -113,35 +115,23 @@ void ModifiedCamClay::update_point(const double* de, Point& pt) const {
         return;
     }
     if (f0 < -tol * pt.pc * pt.pc) {
-        // Pegasus iteration for the crossing of the yield surface along the elastic path.
-        double a0 = 0.0, a1 = 1.0, fa = f0, fb = f1;
-        for (int it = 0; it < 40; ++it) {
-            alpha = a1 - fb * (a1 - a0) / (fb - fa);
+        // The elastic share of the increment: where the elastic path meets the surface.
+        alpha = pegasus_root(f0, f1, tol * pt.pc * pt.pc, [&](double a) {
             double part[6];
-            for (int i = 0; i < 6; ++i) part[i] = alpha * de[i];
+            for (int i = 0; i < 6; ++i) part[i] = a * de[i];
             elastic_step(pt, part, trial);
-            const double fn = f(trial);
-            if (std::abs(fn) <= tol * pt.pc * pt.pc) break;
-            if (fn * fb < 0.0) {
-                a0 = a1;
-                fa = fb;
-            } else {
-                fa *= fb / (fb + fn);
-            }
-            a1 = alpha;
-            fb = fn;
-        }
+            return f(trial);
+        });
         pt = trial;
     }
     // Plastic part: modified Euler with local error control (Sloan et al. 2001).
     double rest[6];
     for (int i = 0; i < 6; ++i) rest[i] = (1.0 - alpha) * de[i];
-    double T = 0.0, dT = 1.0;
-    int substeps = 0;
-    while (T < 1.0) {
-        if (++substeps > 100000 || dT < 1e-12) throw std::runtime_error("modified Cam clay: substepping did not converge");
+    SubstepClock clock(tol, 100000, 1e-12);
+    while (clock.unfinished()) {
+        if (clock.exhausted()) throw std::runtime_error("modified Cam clay: substepping did not converge");
         double d[6], ds1[6], ds2[6], dpc1, dpc2;
-        for (int i = 0; i < 6; ++i) d[i] = dT * rest[i];
+        for (int i = 0; i < 6; ++i) d[i] = clock.fraction() * rest[i];
         plastic_rate(pt, d, ds1, dpc1);
         Point mid = pt;
         for (int i = 0; i < 6; ++i) mid.s[i] += ds1[i];
@@ -155,16 +145,9 @@ void ModifiedCamClay::update_point(const double* de, Point& pt) const {
         }
         next.pc = std::max(next.pc + 0.5 * (dpc1 + dpc2), par_.p_min);
         const double scale = std::max(norm6(next.s), par_.p_min);
-        const double err = std::max({norm6(diff) / scale, 0.5 * std::abs(dpc2 - dpc1) / next.pc, 1e-16});
-        const double grow = std::clamp(0.9 * std::sqrt(tol / err), 0.1, 2.0);
-        if (err > tol) {
-            dT *= grow;
-            continue;
-        }
+        if (!clock.accept(std::max(norm6(diff) / scale, 0.5 * std::abs(dpc2 - dpc1) / next.pc))) continue;
         correct_drift(next);
         pt = next;
-        T += dT;
-        dT = std::min(dT * grow, 1.0 - T);
     }
 }
 

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "mpm/substepping.hpp"
+
 #include "mpm/critical_state_common.hpp"
 
 namespace pilempm::mpm {
@@ -259,14 +261,14 @@ void SubloadingCamClay::update_point(const double* de, Point& pt) const {
         return;
     }
     // Modified Euler with local error control (Sloan et al. 2001), as modified Cam clay.
-    double T = 0.0, dT = 1.0;
-    int substeps = 0;
-    while (T < 1.0) {
-        if (++substeps > 100000 || dT < 1e-12) throw std::runtime_error("subloading Cam clay: substepping did not converge");
+    SubstepClock clock(tol, 100000, 1e-12);
+    while (clock.unfinished()) {
+        if (clock.exhausted()) throw std::runtime_error("subloading Cam clay: substepping did not converge");
+        const double dT = clock.fraction();
         double d[6], ds1[6], ds2[6], dpc1, dpc2, drho1, drho2, deps1, deps2;
         for (int i = 0; i < 6; ++i) d[i] = dT * de[i];
         double dl1;
-        if (T == 0.0) {  // the rate is homogeneous of degree 1 in the increment
+        if (clock.first()) {  // the rate is homogeneous of degree 1 in the increment
             dl1 = dT * dl0;
             for (int i = 0; i < 6; ++i) ds1[i] = dT * ds0[i];
             dpc1 = dT * dpc0;
@@ -291,19 +293,13 @@ void SubloadingCamClay::update_point(const double* de, Point& pt) const {
         next.eps_p += 0.5 * (deps1 + deps2);
         const double scale = std::max(norm6(next.s), par_.p_min);
         const double err = std::max({norm6(diff) / scale, 0.5 * std::abs(dpc2 - dpc1) / next.pc,
-                                     0.5 * std::abs(drho2 - drho1) / (par_.lambda - par_.kappa), 1e-16});
-        const double grow = std::clamp(0.9 * std::sqrt(tol / err), 0.1, 2.0);
-        if (err > tol) {
-            dT *= grow;
-            continue;
-        }
+                                     0.5 * std::abs(drho2 - drho1) / (par_.lambda - par_.kappa)});
+        if (!clock.accept(err)) continue;
         // On loading keep the stress on the subloading surface; an elastic substep moved it
         // inside, and the surface follows it there.
         if (dl1 > 0.0 || dl2 > 0.0) correct_drift(next);
         else next.rho = rho_of_stress(next.s, next.pc);
         pt = next;
-        T += dT;
-        dT = std::min(dT * grow, 1.0 - T);
     }
 }
 
