@@ -1,6 +1,7 @@
 #include "app/mpm_job.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cmath>
 #include <cstdio>
@@ -206,6 +207,7 @@ std::string fingerprint(const io::MpmCase& c) {
 
 template <int D>
 int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, bool resume) {
+    const auto wall0 = std::chrono::steady_clock::now();
     MpmRun<D> run = build<D>(c);
     auto& m = run.model;
     io::StagedDirectory staged(out_dir, resume);
@@ -353,6 +355,13 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         .add("material_points", static_cast<double>(m.particles.size()))
         .add("grid_nodes", static_cast<double>(m.grid.num_nodes())).add("steps", static_cast<double>(solver.steps()))
         .add("simulated_time_s", solver.time());
+    {
+        // Throughput of this invocation (a resumed run counts only the steps it took).
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+        const double steps_here = static_cast<double>(solver.steps() - resumed_steps);
+        summary.add("wall_time_s", wall)
+            .add("particle_steps_per_s", wall > 0.0 ? steps_here * static_cast<double>(m.particles.size()) / wall : 0.0);
+    }
     {
         // Where the material ended up: run-out, heave and settlement read off the extent.
         std::vector<double> lo(D, 1e300), hi(D, -1e300);
