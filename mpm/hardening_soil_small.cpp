@@ -166,18 +166,84 @@ double HardeningSoilSmall::stiffness_factor(double s3) const {
     return std::pow(std::max(s3 + a_, par_.p_min) / pref_s_, par_.m);
 }
 
+// Cyclic Jacobi rotations (no trigonometry: one square root and one division per
+// rotation). In the frame of a nearby decomposition (hint) the tensor is already almost
+// diagonal, and one sweep or two reach rounding; without a hint, from the Cartesian axes.
+// A diagonal tensor is taken as it is (its principal stresses are its entries exactly).
 HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t, const Principal* hint) const {
-    (void)hint;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-    es.computeDirect(to_matrix(t));
-    const Eigen::Vector3d ev = es.eigenvalues();  // ascending
-    const Eigen::Matrix3d& V = es.eigenvectors();
     Principal pr;
-    for (int i = 0; i < 3; ++i) {
-        pr.s[i] = ev(2 - i);
-        for (int j = 0; j < 3; ++j) pr.v[i][j] = V(j, 2 - i);
+    double d[3], q[3][3];  // q[i]: the basis vector i (Cartesian components)
+    double a01, a02, a12;
+    if (t[3] == 0.0 && t[4] == 0.0 && t[5] == 0.0) {
+        d[0] = t[0];
+        d[1] = t[1];
+        d[2] = t[2];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
+        a01 = a02 = a12 = 0.0;
+    } else if (hint) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = hint->v[i][j];
+        double tq[3][3];  // t q_i
+        for (int i = 0; i < 3; ++i) {
+            const double* e = q[i];
+            tq[i][0] = t[0] * e[0] + t[3] * e[1] + t[5] * e[2];
+            tq[i][1] = t[3] * e[0] + t[1] * e[1] + t[4] * e[2];
+            tq[i][2] = t[5] * e[0] + t[4] * e[1] + t[2] * e[2];
+        }
+        auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+        d[0] = dot(q[0], tq[0]);
+        d[1] = dot(q[1], tq[1]);
+        d[2] = dot(q[2], tq[2]);
+        a01 = dot(q[0], tq[1]);
+        a02 = dot(q[0], tq[2]);
+        a12 = dot(q[1], tq[2]);
+    } else {
+        d[0] = t[0];
+        d[1] = t[1];
+        d[2] = t[2];
+        a01 = t[3];
+        a12 = t[4];
+        a02 = t[5];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
     }
-    pr.s3m = (t[3] != 0.0 || t[4] != 0.0 || t[5] != 0.0) ? pr.s[2] : std::min({t[0], t[1], t[2]});
+    // Rotation in the (p, r) plane annihilating a_pr; x, y: the other two entries of the
+    // row/column of the third index k (a_kp, a_kr).
+    auto rotate = [&](int p, int r, double& apr, double& x, double& y) {
+        const double theta = (d[r] - d[p]) / (2.0 * apr);
+        const double tt = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(tt * tt + 1.0), sn = tt * c;
+        d[p] -= tt * apr;
+        d[r] += tt * apr;
+        apr = 0.0;
+        const double xp = c * x - sn * y, yr = sn * x + c * y;
+        x = xp;
+        y = yr;
+        for (int j = 0; j < 3; ++j) {
+            const double qp = q[p][j], qr = q[r][j];
+            q[p][j] = c * qp - sn * qr;
+            q[r][j] = sn * qp + c * qr;
+        }
+    };
+    for (int sweep = 0; sweep < 12; ++sweep) {
+        const double eps = 1e-17 * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]));
+        const bool r01 = std::abs(a01) > eps, r02 = std::abs(a02) > eps, r12 = std::abs(a12) > eps;
+        if (!r01 && !r02 && !r12) break;
+        if (r01) rotate(0, 1, a01, a02, a12);  // k = 2: a_20, a_21
+        if (std::abs(a02) > eps) rotate(0, 2, a02, a01, a12);  // k = 1: a_10, a_12
+        if (std::abs(a12) > eps) rotate(1, 2, a12, a01, a02);  // k = 0: a_01, a_02
+    }
+    // Descending order.
+    int o[3] = {0, 1, 2};
+    if (d[o[0]] < d[o[1]]) std::swap(o[0], o[1]);
+    if (d[o[1]] < d[o[2]]) std::swap(o[1], o[2]);
+    if (d[o[0]] < d[o[1]]) std::swap(o[0], o[1]);
+    for (int i = 0; i < 3; ++i) {
+        pr.s[i] = d[o[i]];
+        for (int j = 0; j < 3; ++j) pr.v[i][j] = q[o[i]][j];
+    }
+    pr.s3m = pr.s[2];
     pr.wm = stiffness_factor(pr.s3m);
     return pr;
 }
