@@ -40,6 +40,8 @@ void apply_elastic(double lam, double G, const double* de, double* ds) {
 struct HardeningSoilSmall::Principal {
     double s[3];
     double v[3][3];
+    double s3m;  // the minor principal stress the stiffness follows (the least normal stress if t is diagonal)
+    double wm;   // w^m at s3m
     // sum_i c_i v_i v_i^T as [xx yy zz xy yz zx]. Near a corner (triaxial compression
     // s2 = s3, extension s1 = s2) the coefficients of the two close principal stresses are
     // blended towards their mean, fully at the corner (Koiter's rule with equal
@@ -136,7 +138,7 @@ HardeningSoilSmall::HardeningSoilSmall(const HardeningSoilSmallParameters& p)
     double dq_dg = 0.0, dq_ds = 0.0;
     bool on_mc = false;
     const double gp0 = gamma_of(qt, K * S);
-    qy(gp0, K * S, dq_dg, dq_ds, on_mc);
+    qy(gp0, K * S, std::pow(std::max(K * S, p.p_min) / pref_s_, p.m), dq_dg, dq_ds, on_mc);
     need(!on_mc, "the K0nc state lies on the Mohr-Coulomb surface");
     const double g = ((1.0 - K) - K * dq_ds) / dq_dg;
     const double sphm = qt / (S * (1.0 + K));  // mobilised sin phi at the K0nc state
@@ -164,16 +166,85 @@ double HardeningSoilSmall::stiffness_factor(double s3) const {
     return std::pow(std::max(s3 + a_, par_.p_min) / pref_s_, par_.m);
 }
 
-HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t) const {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-    es.computeDirect(to_matrix(t));
-    const Eigen::Vector3d ev = es.eigenvalues();  // ascending
-    const Eigen::Matrix3d& V = es.eigenvectors();
+// Cyclic Jacobi rotations (no trigonometry: one square root and one division per
+// rotation). In the frame of a nearby decomposition (hint) the tensor is already almost
+// diagonal, and one sweep or two reach rounding; without a hint, from the Cartesian axes.
+// A diagonal tensor is taken as it is (its principal stresses are its entries exactly).
+HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t, const Principal* hint) const {
     Principal pr;
-    for (int i = 0; i < 3; ++i) {
-        pr.s[i] = ev(2 - i);
-        for (int j = 0; j < 3; ++j) pr.v[i][j] = V(j, 2 - i);
+    double d[3], q[3][3];  // q[i]: the basis vector i (Cartesian components)
+    double a01, a02, a12;
+    if (t[3] == 0.0 && t[4] == 0.0 && t[5] == 0.0) {
+        d[0] = t[0];
+        d[1] = t[1];
+        d[2] = t[2];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
+        a01 = a02 = a12 = 0.0;
+    } else if (hint) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = hint->v[i][j];
+        double tq[3][3];  // t q_i
+        for (int i = 0; i < 3; ++i) {
+            const double* e = q[i];
+            tq[i][0] = t[0] * e[0] + t[3] * e[1] + t[5] * e[2];
+            tq[i][1] = t[3] * e[0] + t[1] * e[1] + t[4] * e[2];
+            tq[i][2] = t[5] * e[0] + t[4] * e[1] + t[2] * e[2];
+        }
+        auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+        d[0] = dot(q[0], tq[0]);
+        d[1] = dot(q[1], tq[1]);
+        d[2] = dot(q[2], tq[2]);
+        a01 = dot(q[0], tq[1]);
+        a02 = dot(q[0], tq[2]);
+        a12 = dot(q[1], tq[2]);
+    } else {
+        d[0] = t[0];
+        d[1] = t[1];
+        d[2] = t[2];
+        a01 = t[3];
+        a12 = t[4];
+        a02 = t[5];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
     }
+    // Rotation in the (p, r) plane annihilating a_pr; x, y: the other two entries of the
+    // row/column of the third index k (a_kp, a_kr).
+    auto rotate = [&](int p, int r, double& apr, double& x, double& y) {
+        const double theta = (d[r] - d[p]) / (2.0 * apr);
+        const double tt = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(tt * tt + 1.0), sn = tt * c;
+        d[p] -= tt * apr;
+        d[r] += tt * apr;
+        apr = 0.0;
+        const double xp = c * x - sn * y, yr = sn * x + c * y;
+        x = xp;
+        y = yr;
+        for (int j = 0; j < 3; ++j) {
+            const double qp = q[p][j], qr = q[r][j];
+            q[p][j] = c * qp - sn * qr;
+            q[r][j] = sn * qp + c * qr;
+        }
+    };
+    for (int sweep = 0; sweep < 12; ++sweep) {
+        const double eps = 1e-17 * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]));
+        const bool r01 = std::abs(a01) > eps, r02 = std::abs(a02) > eps, r12 = std::abs(a12) > eps;
+        if (!r01 && !r02 && !r12) break;
+        if (r01) rotate(0, 1, a01, a02, a12);  // k = 2: a_20, a_21
+        if (std::abs(a02) > eps) rotate(0, 2, a02, a01, a12);  // k = 1: a_10, a_12
+        if (std::abs(a12) > eps) rotate(1, 2, a12, a01, a02);  // k = 0: a_01, a_02
+    }
+    // Descending order.
+    int o[3] = {0, 1, 2};
+    if (d[o[0]] < d[o[1]]) std::swap(o[0], o[1]);
+    if (d[o[1]] < d[o[2]]) std::swap(o[1], o[2]);
+    if (d[o[0]] < d[o[1]]) std::swap(o[0], o[1]);
+    for (int i = 0; i < 3; ++i) {
+        pr.s[i] = d[o[i]];
+        for (int j = 0; j < 3; ++j) pr.v[i][j] = q[o[i]][j];
+    }
+    pr.s3m = pr.s[2];
+    pr.wm = stiffness_factor(pr.s3m);
     return pr;
 }
 
@@ -226,7 +297,7 @@ double HardeningSoilSmall::history_ratio(double* H, const double* d, double& tan
 
 // The hyperbola's yield deviator q_y at (gamma_p, s = s3 + a), capped at q_f, with its
 // derivatives (implicit differentiation of A q q_a / (q_a - q) - B q = gamma_p).
-double HardeningSoilSmall::qy(double gp, double s, double& dq_dg, double& dq_ds, bool& on_mc) const {
+double HardeningSoilSmall::qy(double gp, double s, double wm, double& dq_dg, double& dq_ds, bool& on_mc) const {
     const double qf = kf_ * s;
     if (s <= 0.0) {
         on_mc = true;
@@ -235,7 +306,6 @@ double HardeningSoilSmall::qy(double gp, double s, double& dq_dg, double& dq_ds,
         return std::max(qf, 0.0);
     }
     const bool floored = s < par_.p_min;
-    const double wm = std::pow(std::max(s, par_.p_min) / pref_s_, par_.m);
     const double A = (2.0 - par_.R_f) / (par_.E50_ref * wm), B = 2.0 / (par_.Eur_ref * wm);
     const double qa = qf / par_.R_f;
     const double g = std::max(gp, 0.0);
@@ -271,15 +341,15 @@ double HardeningSoilSmall::cap_radius(const Principal& pr) const {
     return std::sqrt(qt * qt / (alpha_ * alpha_) + pstar * pstar);
 }
 
-HardeningSoilSmall::Surfaces HardeningSoilSmall::surfaces(const Point& pt, bool grads) const {
+HardeningSoilSmall::Surfaces HardeningSoilSmall::surfaces(const Point& pt, const Principal& pr, bool grads) const {
     Surfaces S;
-    const Principal pr = principal(pt.t);
     const double s = pr.s[2] + a_, q = pr.s[0] - pr.s[2];
     S.valid = s > 0.01 * par_.p_min;
     S.scale = std::max(pr.s[0] + a_, par_.p_min);
     double dq_dg = 0.0, dq_ds = 0.0;
     bool on_mc = false;
-    S.fs = q - qy(pt.gp, s, dq_dg, dq_ds, on_mc);
+    const double wm = pr.s3m == pr.s[2] ? pr.wm : stiffness_factor(pr.s[2]);
+    S.fs = q - qy(pt.gp, s, wm, dq_dg, dq_ds, on_mc);
     const double pstar = (pr.s[0] + pr.s[1] + pr.s[2]) / 3.0 + a_;
     const double qt = pr.s[0] + (delta_ - 1.0) * pr.s[1] - delta_ * pr.s[2];
     const double R = std::sqrt(qt * qt / (alpha_ * alpha_) + pstar * pstar);
@@ -302,26 +372,24 @@ HardeningSoilSmall::Surfaces HardeningSoilSmall::surfaces(const Point& pt, bool 
     return S;
 }
 
-double HardeningSoilSmall::yield_max(const Point& pt) const {
-    const Surfaces S = surfaces(pt, false);
+double HardeningSoilSmall::yield_max(const Point& pt, const Surfaces& S) const {
     return std::max(S.fs / S.scale, S.fc / std::max(pt.pp, par_.p_min));
 }
 
-void HardeningSoilSmall::elastic_moduli(const Point& pt, double ratio, double& lam, double& G) const {
-    double s3 = std::min({pt.t[0], pt.t[1], pt.t[2]});
-    if (pt.t[3] != 0.0 || pt.t[4] != 0.0 || pt.t[5] != 0.0) s3 = principal(pt.t).s[2];
-    G = ratio * par_.G0_ref * stiffness_factor(s3);
+void HardeningSoilSmall::elastic_moduli(const Principal& pr, double ratio, double& lam, double& G) const {
+    G = ratio * par_.G0_ref * pr.wm;
     lam = lam_over_G_ * G;
 }
 
 // Two-stage (midpoint) hypoelastic step: the stiffness follows s3 within the step.
-void HardeningSoilSmall::elastic_step(const Point& in, const double* de, double ratio, Point& out) const {
+void HardeningSoilSmall::elastic_step(const Point& in, const Principal& pr_in, const double* de, double ratio,
+                                      Point& out) const {
     double lam, G, ds[6];
-    elastic_moduli(in, ratio, lam, G);
+    elastic_moduli(pr_in, ratio, lam, G);
     apply_elastic(lam, G, de, ds);
-    Point mid = in;
-    for (int i = 0; i < 6; ++i) mid.t[i] += 0.5 * ds[i];
-    elastic_moduli(mid, ratio, lam, G);
+    double mid[6];
+    for (int i = 0; i < 6; ++i) mid[i] = in.t[i] + 0.5 * ds[i];
+    elastic_moduli(principal(mid, &pr_in), ratio, lam, G);
     apply_elastic(lam, G, de, ds);
     out = in;
     for (int i = 0; i < 6; ++i) out.t[i] += ds[i];
@@ -329,13 +397,12 @@ void HardeningSoilSmall::elastic_step(const Point& in, const double* de, double 
 
 // Elasto-plastic stress increment for the elastic predictor increment Dde: the active set
 // of {shear, cap} whose multipliers are all positive (Koiter), none when unloading. False:
-// outside the hardening laws' domain (near the apex).
-bool HardeningSoilSmall::plastic_rate(const Point& pt, const double* Dde, double ratio, double* ds, double& dgp,
-                                      double& dpp, int& candidates) const {
-    const Surfaces S = surfaces(pt, true);
+// outside the hardening laws' domain (near the apex). S: surfaces(pt, pr, true).
+bool HardeningSoilSmall::plastic_rate(const Point& pt, const Principal& pr, const Surfaces& S, const double* Dde,
+                                      double ratio, double* ds, double& dgp, double& dpp, int& candidates) const {
     if (!S.valid) return false;
     double lam, G, Dms[6], Dmc[6];
-    elastic_moduli(pt, ratio, lam, G);
+    elastic_moduli(pr, ratio, lam, G);
     apply_elastic(lam, G, S.ms, Dms);
     apply_elastic(lam, G, S.nc, Dmc);
     const double tol = 10.0 * par_.tolerance;
@@ -376,15 +443,18 @@ bool HardeningSoilSmall::plastic_rate(const Point& pt, const double* Dde, double
 }
 
 // Pulls a stress that drifted outside back onto the surfaces along D m (Potts & Gens 1985).
-void HardeningSoilSmall::correct_drift(Point& pt, double ratio) const {
+void HardeningSoilSmall::correct_drift(Point& pt, Principal& pr, double ratio, Surfaces& S, bool& S_current) const {
     const double tol = par_.tolerance;
+    S_current = false;
     for (int it = 0; it < 6; ++it) {
-        const Surfaces S = surfaces(pt, true);
+        if (it > 0) pr = principal(pt.t, &pr);
+        S = surfaces(pt, pr, true);
+        S_current = true;
         if (!S.valid) return;
         const bool out_s = S.fs > tol * S.scale, out_c = S.fc > tol * std::max(pt.pp, par_.p_min);
         if (!out_s && !out_c) return;
         double lam, G, Dms[6], Dmc[6];
-        elastic_moduli(pt, ratio, lam, G);
+        elastic_moduli(pr, ratio, lam, G);
         apply_elastic(lam, G, S.ms, Dms);
         apply_elastic(lam, G, S.nc, Dmc);
         double ls = 0.0, lc = 0.0;
@@ -407,22 +477,37 @@ void HardeningSoilSmall::correct_drift(Point& pt, double ratio) const {
         for (int i = 0; i < 6; ++i) pt.t[i] -= ls * Dms[i] + lc * Dmc[i];
         pt.gp = std::max(pt.gp + ls, 0.0);
         pt.pp = std::max(pt.pp + lc * S.dpp_dlc, a_ + par_.p_min);
+        S_current = false;
     }
+    pr = principal(pt.t, &pr);
 }
 
-bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) const {
+// Every distinct stress is decomposed once: the decomposition (and the surfaces) of the
+// substep's start serve its elastic predictor, both trials of a rejected substep and the
+// first stage; the drift check of an accepted substep serves the next one.
+bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio, Principal& pr) const {
     const double tol = par_.tolerance;
-    if (!surfaces(pt, false).valid) return false;
-    if (yield_max(pt) > tol) correct_drift(pt, ratio);  // e.g. a set-up a hair outside
+    pr = principal(pt.t);
+    Surfaces S = surfaces(pt, pr, true);
+    if (!S.valid) return false;
+    bool S_current = true;
+    if (yield_max(pt, S) > tol) correct_drift(pt, pr, ratio, S, S_current);  // e.g. a set-up a hair outside
     Point trial;
-    elastic_step(pt, de, ratio, trial);
-    if (!surfaces(trial, false).valid) return false;
-    const double f0 = yield_max(pt), f1 = yield_max(trial);
+    elastic_step(pt, pr, de, ratio, trial);
+    Principal pr_trial = principal(trial.t, &pr);
+    const Surfaces St = surfaces(trial, pr_trial, false);
+    if (!St.valid) return false;
+    if (!S_current) {
+        S = surfaces(pt, pr, true);
+        S_current = true;
+    }
+    const double f0 = yield_max(pt, S), f1 = yield_max(trial, St);
     // Strictly elastic only: accepting trials up to the tolerance would give a point at the
     // vertex of the shear cone (isotropic, gamma_p = 0) an elastic band of width tol, with a
     // tangent there unlike the one just outside it.
     if (f1 <= 0.0) {
         pt = trial;
+        pr = pr_trial;
         return true;
     }
     double alpha = 0.0;  // elastic share of the increment
@@ -433,8 +518,9 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) co
             alpha = a1 - fb * (a1 - a0) / (fb - fa);
             double part[6];
             for (int i = 0; i < 6; ++i) part[i] = alpha * de[i];
-            elastic_step(pt, part, ratio, trial);
-            const double fn = yield_max(trial);
+            elastic_step(pt, pr, part, ratio, trial);
+            pr_trial = principal(trial.t, &pr);
+            const double fn = yield_max(trial, surfaces(trial, pr_trial, false));
             if (std::abs(fn) <= tol) break;
             if (fn * fb < 0.0) {
                 a0 = a1;
@@ -446,6 +532,8 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) co
             fb = fn;
         }
         pt = trial;
+        pr = pr_trial;
+        S_current = false;
     }
     // Plastic part: modified Euler with local error control (Sloan et al. 2001).
     double rest[6];
@@ -458,15 +546,21 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) co
         for (int i = 0; i < 6; ++i) d[i] = dT * rest[i];
         // Both stages share the substep's elastic predictor, so that a substep without
         // plastic flow is exactly the elastic step (no jump where a surface is touched).
-        elastic_step(pt, d, ratio, trial);
+        elastic_step(pt, pr, d, ratio, trial);
         for (int i = 0; i < 6; ++i) Dde[i] = trial.t[i] - pt.t[i];
+        if (!S_current) {
+            S = surfaces(pt, pr, true);
+            S_current = true;
+        }
         int candidates = -1;
-        if (!plastic_rate(pt, Dde, ratio, ds1, dg1, dp1, candidates)) return false;
+        if (!plastic_rate(pt, pr, S, Dde, ratio, ds1, dg1, dp1, candidates)) return false;
         Point mid = pt;
         for (int i = 0; i < 6; ++i) mid.t[i] += ds1[i];
         mid.gp += dg1;
         mid.pp = std::max(mid.pp + dp1, a_ + par_.p_min);
-        if (!plastic_rate(mid, Dde, ratio, ds2, dg2, dp2, candidates)) return false;
+        const Principal pr_mid = principal(mid.t, &pr);
+        if (!plastic_rate(mid, pr_mid, surfaces(mid, pr_mid, true), Dde, ratio, ds2, dg2, dp2, candidates))
+            return false;
         Point next = pt;
         double diff[6];
         for (int i = 0; i < 6; ++i) {
@@ -483,8 +577,10 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) co
             dT *= grow;
             continue;
         }
-        correct_drift(next, ratio);
+        Principal pr_next = principal(next.t, &pr);
+        correct_drift(next, pr_next, ratio, S, S_current);
         pt = next;
+        pr = pr_next;
         T += dT;
         dT = std::min(dT * grow, 1.0 - T);
     }
@@ -496,7 +592,7 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio) co
 // the returned stress so that it lies on or inside both surfaces.
 void HardeningSoilSmall::fallback(Point& pt, const double* de, double ratio) const {
     double lam, G, ds[6];
-    elastic_moduli(pt, ratio, lam, G);
+    elastic_moduli(principal(pt.t), ratio, lam, G);
     apply_elastic(lam, G, de, ds);
     double sigma[6], zero[6] = {0, 0, 0, 0, 0, 0}, eps_p = 0.0;
     for (int i = 0; i < 6; ++i) sigma[i] = -(pt.t[i] + ds[i]);
@@ -535,7 +631,7 @@ double HardeningSoilSmall::shear_yield(const double* stress, const double* state
     for (int i = 0; i < 6; ++i) pt.t[i] = -stress[i];
     pt.gp = state[6];
     pt.pp = state[7] + a_;
-    return surfaces(pt, false).fs;
+    return surfaces(pt, principal(pt.t), false).fs;
 }
 
 double HardeningSoilSmall::cap_yield(const double* stress, const double* state) const {
@@ -543,7 +639,7 @@ double HardeningSoilSmall::cap_yield(const double* stress, const double* state) 
     for (int i = 0; i < 6; ++i) pt.t[i] = -stress[i];
     pt.gp = state[6];
     pt.pp = state[7] + a_;
-    return surfaces(pt, false).fc;
+    return surfaces(pt, principal(pt.t), false).fc;
 }
 
 void HardeningSoilSmall::update(int count, const int* points, const double* dstrain, double* stress, double* state,
@@ -562,13 +658,13 @@ void HardeningSoilSmall::update(int count, const int* points, const double* dstr
         // Compression-positive tensor strain increment.
         const double de[6] = {-e[0], -e[1], -e[2], -0.5 * e[3], -0.5 * e[4], -0.5 * e[5]};
         const Point start = pt;
-        if (!integrate(pt, de, ratio)) {
+        Principal pr;
+        if (!integrate(pt, de, ratio, pr)) {
             pt = start;
             fallback(pt, de, ratio);
         } else {
             // The hardening return keeps q <= q_f only to the drift tolerance; past it, or in
             // tension beyond the apex, the Mohr-Coulomb return makes the stress admissible.
-            const Principal pr = principal(pt.t);
             const double sc = std::max(pr.s[0] + a_, par_.p_min);
             if (pr.s[0] - pr.s[2] - failure_deviator(pr.s[2]) > 10.0 * par_.tolerance * sc || pr.s[2] + a_ < 0.0) {
                 double sigma[6], zero[6] = {0, 0, 0, 0, 0, 0}, eps_p = 0.0;

@@ -87,19 +87,25 @@ private:
     };
     struct Principal;
     struct Surfaces;
-    Principal principal(const double* t) const;
+    // Principal stresses and directions of t; hint: the decomposition of a nearby stress
+    // (the same increment), used as the starting frame of the iteration.
+    Principal principal(const double* t, const Principal* hint = nullptr) const;
     double stiffness_factor(double s3) const;  // w^m
-    void elastic_moduli(const Point& pt, double ratio, double& lam, double& G) const;
-    void elastic_step(const Point& in, const double* de, double ratio, Point& out) const;
-    Surfaces surfaces(const Point& pt, bool with_gradients) const;
-    double yield_max(const Point& pt) const;  // max of f_s / scale and f_c / p_p (normalised)
-    bool plastic_rate(const Point& pt, const double* Dde, double ratio, double* ds, double& dgp, double& dpp,
-                      int& candidates) const;
-    void correct_drift(Point& pt, double ratio) const;
-    bool integrate(Point& pt, const double* de, double ratio) const;  // false: leave to the fallback
+    void elastic_moduli(const Principal& pr, double ratio, double& lam, double& G) const;
+    // out = in + the elastic step over de; pr_in: the decomposition of in.
+    void elastic_step(const Point& in, const Principal& pr_in, const double* de, double ratio, Point& out) const;
+    Surfaces surfaces(const Point& pt, const Principal& pr, bool with_gradients) const;
+    double yield_max(const Point& pt, const Surfaces& S) const;  // max of f_s / scale and f_c / p_p
+    bool plastic_rate(const Point& pt, const Principal& pr, const Surfaces& S, const double* Dde, double ratio,
+                      double* ds, double& dgp, double& dpp, int& candidates) const;
+    // pr: the decomposition of pt, kept current. S (with gradients) is left as the surfaces
+    // of the returned pt when S_current is set.
+    void correct_drift(Point& pt, Principal& pr, double ratio, Surfaces& S, bool& S_current) const;
+    // false: leave to the fallback. pr: on true, the decomposition of the returned pt.
+    bool integrate(Point& pt, const double* de, double ratio, Principal& pr) const;
     void fallback(Point& pt, const double* de, double ratio) const;
     double history_ratio(double* H, const double* dstrain, double& tangent_ratio) const;
-    double qy(double gp, double s, double& dq_dg, double& dq_ds, bool& on_mc) const;
+    double qy(double gp, double s, double wm, double& dq_dg, double& dq_ds, bool& on_mc) const;
     double gamma_of(double q, double s) const;  // gamma_p where q_y(gamma_p, s) = min(q, q_f)
     double cap_radius(const Principal& pr) const;
 
