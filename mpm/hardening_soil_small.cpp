@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "mpm/substepping.hpp"
+
 namespace pilempm::mpm {
 
 namespace {
@@ -512,25 +514,14 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio, Pr
     }
     double alpha = 0.0;  // elastic share of the increment
     if (f0 < -tol) {
-        // Pegasus iteration for the crossing of the first surface along the elastic path.
-        double a0 = 0.0, a1 = 1.0, fa = f0, fb = f1;
-        for (int it = 0; it < 50; ++it) {
-            alpha = a1 - fb * (a1 - a0) / (fb - fa);
+        // The elastic share: where the elastic path meets the first surface.
+        alpha = pegasus_root(f0, f1, tol, [&](double a) {
             double part[6];
-            for (int i = 0; i < 6; ++i) part[i] = alpha * de[i];
+            for (int i = 0; i < 6; ++i) part[i] = a * de[i];
             elastic_step(pt, pr, part, ratio, trial);
             pr_trial = principal(trial.t, &pr);
-            const double fn = yield_max(trial, surfaces(trial, pr_trial, false));
-            if (std::abs(fn) <= tol) break;
-            if (fn * fb < 0.0) {
-                a0 = a1;
-                fa = fb;
-            } else {
-                fa *= fb / (fb + fn);
-            }
-            a1 = alpha;
-            fb = fn;
-        }
+            return yield_max(trial, surfaces(trial, pr_trial, false));
+        }, 50);
         pt = trial;
         pr = pr_trial;
         S_current = false;
@@ -538,12 +529,11 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio, Pr
     // Plastic part: modified Euler with local error control (Sloan et al. 2001).
     double rest[6];
     for (int i = 0; i < 6; ++i) rest[i] = (1.0 - alpha) * de[i];
-    double T = 0.0, dT = 1.0;
-    int substeps = 0;
-    while (T < 1.0) {
-        if (++substeps > 20000 || dT < 1e-10) return false;
+    SubstepClock clock(tol, 20000, 1e-10);
+    while (clock.unfinished()) {
+        if (clock.exhausted()) return false;
         double d[6], ds1[6], ds2[6], dg1, dg2, dp1, dp2, Dde[6];
-        for (int i = 0; i < 6; ++i) d[i] = dT * rest[i];
+        for (int i = 0; i < 6; ++i) d[i] = clock.fraction() * rest[i];
         // Both stages share the substep's elastic predictor, so that a substep without
         // plastic flow is exactly the elastic step (no jump where a surface is touched).
         elastic_step(pt, pr, d, ratio, trial);
@@ -571,18 +561,12 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio, Pr
         next.pp = std::max(next.pp + 0.5 * (dp1 + dp2), a_ + par_.p_min);
         const double scale = std::max(tnorm(next.t), par_.p_min);
         const double err = std::max({tnorm(diff) / scale, 0.5 * std::abs(dp2 - dp1) / next.pp,
-                                     0.5 * std::abs(dg2 - dg1) / std::max(next.gp, 1e-5), 1e-16});
-        const double grow = std::clamp(0.9 * std::sqrt(tol / err), 0.1, 2.0);
-        if (err > tol) {
-            dT *= grow;
-            continue;
-        }
+                                     0.5 * std::abs(dg2 - dg1) / std::max(next.gp, 1e-5)});
+        if (!clock.accept(err)) continue;
         Principal pr_next = principal(next.t, &pr);
         correct_drift(next, pr_next, ratio, S, S_current);
         pt = next;
         pr = pr_next;
-        T += dT;
-        dT = std::min(dT * grow, 1.0 - T);
     }
     return true;
 }

@@ -43,9 +43,9 @@ private:
 // The root alpha in (0, 1) of f(alpha), given f(0) = f0 < 0 < f(1) = f1, to |f| <= tol.
 // f may keep the state it evaluated: the last call is at the returned alpha.
 template <class F>
-double pegasus_root(double f0, double f1, double tol, F&& f) {
+double pegasus_root(double f0, double f1, double tol, F&& f, int max_iterations = 40) {
     double a0 = 0.0, a1 = 1.0, fa = f0, fb = f1, alpha = 0.0;
-    for (int it = 0; it < 40; ++it) {
+    for (int it = 0; it < max_iterations; ++it) {
         alpha = a1 - fb * (a1 - a0) / (fb - fa);
         const double fn = f(alpha);
         if (std::abs(fn) <= tol) break;
