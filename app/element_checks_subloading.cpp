@@ -7,8 +7,6 @@
 #include <numbers>
 
 #include "app/element_test_checks.hpp"
-#include "mpm/modified_cam_clay.hpp"
-#include "mpm/subloading_cam_clay.hpp"
 
 namespace pilempm::app {
 
@@ -137,26 +135,13 @@ std::vector<VerificationCheck> subloading_oedometer(const ElementTestContext& ct
 std::vector<VerificationCheck> subloading_reduces_to_mcc(const ElementTestContext& ctx) {
     ctx.require_model(kModel, "subloading_reduces_to_mcc");
     const auto& m = ctx.c.material;
-    mpm::SubloadingCamClayParameters sp;
-    sp.lambda = m.lambda;
-    sp.kappa = m.kappa;
-    sp.friction_angle = m.friction_angle;
-    sp.surface = mpm::CriticalStateSurface::DruckerPrager;
-    sp.poisson_ratio = m.poisson_ratio;
-    sp.void_ratio = m.void_ratio;
-    sp.ocr = m.ocr;
-    sp.a = 1e7;
-    sp.p_min = m.min_pressure;
-    mpm::CamClayParameters cp;
-    cp.lambda = m.lambda;
-    cp.kappa = m.kappa;
-    cp.M = m.critical_state_ratio;
-    cp.poisson_ratio = m.poisson_ratio;
-    cp.void_ratio = m.void_ratio;
-    cp.ocr = m.ocr;
-    cp.p_min = m.min_pressure;
-    const mpm::SubloadingCamClay sub(sp);
-    const mpm::ModifiedCamClay mcc(cp);
+    // Both through the case's own material reader, changed only where the comparison asks.
+    io::MaterialInput sub_input = m, mcc_input = m;
+    sub_input.critical_state_surface = "drucker_prager";
+    sub_input.subloading_a = 1e7;
+    mcc_input.model = "modified_cam_clay";
+    const auto sub_model = io::make_constitutive_model(sub_input), mcc_model = io::make_constitutive_model(mcc_input);
+    const mpm::ConstitutiveModel &sub = *sub_model, &mcc = *mcc_model;
     const double s0[6] = {-ctx.c.lateral_stress, -ctx.c.lateral_stress, -ctx.c.axial_stress, 0, 0, 0};
     auto run = [&](const mpm::ConstitutiveModel& model, const io::ElementTestInput& t) {
         std::vector<double> st(model.num_state());

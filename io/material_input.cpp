@@ -142,6 +142,19 @@ MaterialInput read_material(MapReader m, bool with_density) {
     return mat;
 }
 
+namespace {
+// The keys both Cam clay models read the same way.
+template <class Parameters>
+void set_critical_state_common(const MaterialInput& m, Parameters& p) {
+    p.lambda = m.lambda;
+    p.kappa = m.kappa;
+    p.poisson_ratio = m.poisson_ratio;
+    p.void_ratio = m.void_ratio;
+    p.ocr = m.ocr;
+    p.p_min = m.min_pressure;
+}
+}  // namespace
+
 std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialInput& m) {
     if (m.model == "linear_elastic") return std::make_unique<mpm::LinearElastic>(m.youngs_modulus, m.poisson_ratio);
     if (m.model == "hardening_soil_small") {
@@ -165,13 +178,8 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
     }
     if (m.model == "modified_cam_clay") {
         mpm::CamClayParameters p;
-        p.lambda = m.lambda;
-        p.kappa = m.kappa;
+        set_critical_state_common(m, p);
         p.M = m.critical_state_ratio;
-        p.poisson_ratio = m.poisson_ratio;
-        p.void_ratio = m.void_ratio;
-        p.ocr = m.ocr;
-        p.p_min = m.min_pressure;
         return std::make_unique<mpm::ModifiedCamClay>(p);
     }
     if (m.model == "hypoplastic") {
@@ -184,16 +192,11 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
     if (m.model == "umat") return std::make_unique<mpm::UserMaterial>(m.umat);
     if (m.model == "subloading_cam_clay") {
         mpm::SubloadingCamClayParameters p;
-        p.lambda = m.lambda;
-        p.kappa = m.kappa;
+        set_critical_state_common(m, p);
         p.friction_angle = m.friction_angle;  // M in compression = critical_state_ratio
         p.surface = m.critical_state_surface == "drucker_prager" ? mpm::CriticalStateSurface::DruckerPrager
                                                                  : mpm::CriticalStateSurface::MatsuokaNakai;
-        p.poisson_ratio = m.poisson_ratio;
-        p.void_ratio = m.void_ratio;
-        p.ocr = m.ocr;
         p.a = m.subloading_a;
-        p.p_min = m.min_pressure;
         return std::make_unique<mpm::SubloadingCamClay>(p);
     }
     return std::make_unique<mpm::MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,
