@@ -31,6 +31,20 @@ namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
+// Ctrl-C and a batch system's SIGTERM (a job at its time limit) both end the run with a
+// checkpoint to resume from; the previous handlers come back when the run ends.
+struct InterruptHandlers {
+    using Handler = void (*)(int);
+    Handler previous_int, previous_term;
+    InterruptHandlers() : previous_int(std::signal(SIGINT, on_interrupt)), previous_term(std::signal(SIGTERM, on_interrupt)) {}
+    ~InterruptHandlers() {
+        std::signal(SIGINT, previous_int);
+        std::signal(SIGTERM, previous_term);
+    }
+    InterruptHandlers(const InterruptHandlers&) = delete;
+    InterruptHandlers& operator=(const InterruptHandlers&) = delete;
+};
+
 template <int D>
 bool in_region(const io::MpmRegionInput& r, const double* x) {
     if (r.kind == io::MpmRegionInput::Cylinder) {
@@ -265,12 +279,16 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     };
 
     g_interrupted = 0;
-    auto previous_handler = std::signal(SIGINT, on_interrupt);
-    // Test hook: behave as if interrupted (Ctrl-C) once this many steps are done.
+    const InterruptHandlers interrupt_handlers;
+    // Test hook: send this process a signal (SIGINT, or PILEMPM_INTERRUPT_SIGNAL) once this
+    // many steps are done, so the handlers themselves are exercised.
     long interrupt_after = -1;
     if (const char* e = std::getenv("PILEMPM_INTERRUPT_AFTER_STEPS")) interrupt_after = std::atol(e);
+    int interrupt_signal = SIGINT;
+    if (const char* e = std::getenv("PILEMPM_INTERRUPT_SIGNAL")) interrupt_signal = std::atoi(e);
     auto check_interrupt = [&] {
-        if (interrupt_after >= 0 && solver.steps() >= interrupt_after && !resume) g_interrupted = 1;
+        if (interrupt_after >= 0 && solver.steps() >= interrupt_after && !resume && !g_interrupted)
+            std::raise(interrupt_signal);
     };
     double stage_start = solver.time();
     auto save = [&](std::size_t stage) {
@@ -336,7 +354,6 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         }
         if (g_interrupted) {
             save(s);
-            std::signal(SIGINT, previous_handler);
             std::fprintf(stderr, "pilempm: interrupted; resume with --resume (checkpoint kept in %s)\n",
                          staged.incomplete_path().c_str());
             return 130;
@@ -344,7 +361,6 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         vtk.write(solver.time(), m.particles);
         save(s + 1);
     }
-    std::signal(SIGINT, previous_handler);
     vtk.finish();
     io::write_csv(staged.path() / "history.csv", history);
 

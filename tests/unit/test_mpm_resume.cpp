@@ -1,6 +1,8 @@
 // An MPM run interrupted mid-stage and resumed from its checkpoint ends in exactly the
 // state of the same run left alone.
 #include <gtest/gtest.h>
+
+#include <csignal>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -21,8 +23,9 @@ int run(const std::string& command) {
 }  // namespace
 
 // Runs the 1D wave case (FLIP, or APIC whose affine field must be checkpointed too)
-// whole, and interrupted then resumed, and compares the final states bit for bit.
-void check_resume(bool apic) {
+// whole, and interrupted by `signal` (Ctrl-C's SIGINT, a batch system's SIGTERM) then
+// resumed, and compares the final states bit for bit.
+void check_resume(bool apic, int signal) {
     const fs::path dir = fs::temp_directory_path() /
                          ("pilempm-resume-" + std::string(apic ? "apic-" : "flip-") + std::to_string(::getpid()));
     fs::remove_all(dir);
@@ -42,7 +45,7 @@ void check_resume(bool apic) {
 
     ASSERT_EQ(run(exe + " run " + case_file + " --out " + (dir / "whole").string() + " --quiet"), 0);
     // Interrupt after 100 of the ~260 steps: exit 130, the folder kept as .incomplete.
-    ASSERT_EQ(run("PILEMPM_INTERRUPT_AFTER_STEPS=100 " + exe + " run " + case_file + " --out " +
+    ASSERT_EQ(run("PILEMPM_INTERRUPT_AFTER_STEPS=100 PILEMPM_INTERRUPT_SIGNAL=" + std::to_string(signal) + " " + exe + " run " + case_file + " --out " +
                   (dir / "split").string() + " --quiet 2>/dev/null"),
               130);
     EXPECT_FALSE(fs::exists(dir / "split"));
@@ -66,5 +69,5 @@ void check_resume(bool apic) {
     fs::remove_all(dir);
 }
 
-TEST(MpmResume, InterruptedAndResumedRunMatchesAnUninterruptedOne) { check_resume(false); }
-TEST(MpmResume, InterruptedAndResumedApicRunMatchesAnUninterruptedOne) { check_resume(true); }
+TEST(MpmResume, InterruptedAndResumedRunMatchesAnUninterruptedOne) { check_resume(false, SIGINT); }
+TEST(MpmResume, TerminatedAndResumedApicRunMatchesAnUninterruptedOne) { check_resume(true, SIGTERM); }
