@@ -68,6 +68,20 @@ void read_user_material(MapReader& m, MaterialInput& mat) {
                                                               [](double x) { return x >= 0 && x < 89; }});
 }
 
+// The friction law's keys as in Jop, Forterre & Pouliquen (2006); the defaults are their
+// glass beads, so a case names what it changes.
+void read_mu_i(MapReader& m, MaterialInput& mat) {
+    auto& r = mat.mu_i;
+    r.youngs_modulus = mat.youngs_modulus;
+    r.poisson_ratio = mat.poisson_ratio;
+    r.mu_s = m.number_or("mu_s", r.mu_s, in_open_range(0.0, 2.0, "the static friction coefficient mu_s"));
+    r.mu_2 = m.number_or("mu_2", r.mu_2, {"a limiting friction coefficient mu_2 >= mu_s", [s = r.mu_s](double x) { return x >= s && x < 5.0; }});
+    r.I_0 = m.number_or("I_0", r.I_0, positive("the inertial number I_0 halfway from mu_s to mu_2"));
+    r.grain_diameter = m.number_or("grain_diameter", r.grain_diameter, in_open_range(0.0, 0.1, "a grain diameter in m"));
+    r.grain_density = m.number_or("grain_density", r.grain_density, positive("the density of the grains in kg/m^3"));
+    mat.friction_angle = std::atan(r.mu_s) * 180.0 / std::numbers::pi;
+}
+
 }  // namespace
 
 MaterialInput read_material(MapReader m, bool with_density) {
@@ -75,7 +89,7 @@ MaterialInput read_material(MapReader m, bool with_density) {
     mat.name = m.text_or("name", "");
     if (with_density && mat.name.empty()) m.fail("name", "a material name", "none");
     mat.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "modified_cam_clay", "subloading_cam_clay",
-                                   "hypoplastic", "hardening_soil_small", "umat"});
+                                   "hypoplastic", "hardening_soil_small", "mu_i_rheology", "umat"});
     if (with_density) mat.density = m.number("density", positive("density in kg/m^3"));
     if (mat.model != "hypoplastic" && mat.model != "umat")
         mat.poisson_ratio = m.number("poisson_ratio", in_open_range(-1.0, 0.5, "a Poisson's ratio"));
@@ -137,6 +151,7 @@ MaterialInput read_material(MapReader m, bool with_density) {
         mat.cohesion = m.number_or("cohesion", 0.0, non_negative("cohesion in Pa"));
         mat.tension_cutoff = m.number_or("tension_cutoff", 0.0, non_negative("tensile strength in Pa"));
     }
+    if (mat.model == "mu_i_rheology") read_mu_i(m, mat);
     mat.k0 = m.number_or("k0", -1.0, positive("earth pressure coefficient at rest"));
     m.finish();
     return mat;
@@ -189,6 +204,7 @@ std::unique_ptr<mpm::ConstitutiveModel> make_constitutive_model(const MaterialIn
         p.p_min = m.min_pressure;
         return std::make_unique<mpm::Hypoplastic>(p);
     }
+    if (m.model == "mu_i_rheology") return std::make_unique<mpm::MuIRheology>(m.mu_i);
     if (m.model == "umat") return std::make_unique<mpm::UserMaterial>(m.umat);
     if (m.model == "subloading_cam_clay") {
         mpm::SubloadingCamClayParameters p;

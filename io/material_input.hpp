@@ -7,13 +7,14 @@
 #include "io/yaml_reader.hpp"
 #include "mpm/constitutive_model.hpp"
 #include "mpm/hypoplastic.hpp"
+#include "mpm/mu_i_rheology.hpp"
 #include "mpm/user_material.hpp"
 
 namespace pilempm::io {
 
 struct MaterialInput {
     // linear_elastic | mohr_coulomb | modified_cam_clay | subloading_cam_clay | hypoplastic |
-    // hardening_soil_small | umat
+    // hardening_soil_small | mu_i_rheology | umat
     std::string name, model;
     double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
     double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
@@ -25,6 +26,8 @@ struct MaterialInput {
     mpm::HypoplasticParameters hypo;
     // A user material (Abaqus UMAT in a shared library); library resolved against the case file.
     mpm::UserMaterialParameters umat;
+    // Granular flow with mu(I) friction; E and nu as above, friction_angle = atan(mu_s) for K0.
+    mpm::MuIParameters mu_i;
     // Subloading Cam clay besides: a of G(rho) = a rho^2 (required) and the shape of the
     // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager).
     double subloading_a = 0.0;

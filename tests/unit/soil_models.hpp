@@ -9,6 +9,7 @@
 #include "mpm/hypoplastic.hpp"
 #include "mpm/modified_cam_clay.hpp"
 #include "mpm/mohr_coulomb.hpp"
+#include "mpm/mu_i_rheology.hpp"
 #include "mpm/subloading_cam_clay.hpp"
 
 namespace pilempm::mpm::test_models {
@@ -31,6 +32,7 @@ inline std::vector<ModelFactory> all_soil_models() {
         },
         [] { return std::make_unique<Hypoplastic>(HypoplasticParameters{}); },  // with intergranular strain
         [] { return std::make_unique<HardeningSoilSmall>(HardeningSoilSmallParameters{}); },  // strain history H
+        [] { return std::make_unique<MuIRheology>(MuIParameters{}); },
     };
 }
 

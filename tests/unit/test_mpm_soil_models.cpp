@@ -54,6 +54,7 @@ const Material kMaterials[] = {
     {"hardening_soil_small", "model: hardening_soil_small, e50_ref: 48.0e6, eoed_ref: 48.0e6, eur_ref: 144.0e6, "
                              "poisson_ratio: 0.2, g0_ref: 114.4e6, gamma_07: 1.2e-4, stiffness_exponent: 0.45, "
                              "friction_angle: 30.0, cohesion: 10.0, min_pressure: 100.0"},
+    {"mu_i_rheology", "model: mu_i_rheology, youngs_modulus: 5.0e6, poisson_ratio: 0.3"},
 };
 
 std::string replace_all(std::string s, const std::string& key, const std::string& value) {
