@@ -269,45 +269,46 @@ void MpmSolver<D>::update_grid(double dt) {
     unbalanced_ratio_ = applied > 0.0 ? std::sqrt(unbalanced / applied) : 0.0;
 }
 
+// Point i takes its velocity (FLIP/PIC blend or APIC) and position from the updated grid.
 template <int D>
-void MpmSolver<D>::grid_to_particles(double dt) {
+void MpmSolver<D>::grid_to_point(long i, double dt) {
     auto& p = m_.particles;
     const auto& g = m_.grid;
-    const long n = static_cast<long>(p.size());
-    const double flip = m_.flip;
-#pragma omp parallel for schedule(static) if (n > kParallelPoints)
-    for (long i = 0; i < n; ++i) {
-        const Stencil<D>& s = stencil_[i];
-        double a[D] = {}, vg[D] = {};
-        for (int k = 0; k < s.count; ++k)
-            for (int d = 0; d < D; ++d) {
-                a[d] += s.N[k] * g.acceleration[D * s.node[k] + d];
-                vg[d] += s.N[k] * g.velocity[D * s.node[k] + d];
-            }
-        if (m_.apic) {
-            double* C = &p.C[D * D * i];
-            for (int k = 0; k < D * D; ++k) C[k] = 0.0;
-            for (int k = 0; k < s.count; ++k)
-                for (int a = 0; a < D; ++a)
-                    for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[D * s.node[k] + a] * s.dN[k][b];
-        }
+    const Stencil<D>& s = stencil_[i];
+    double a[D] = {}, vg[D] = {};
+    for (int k = 0; k < s.count; ++k)
         for (int d = 0; d < D; ++d) {
-            double& v = p.v[D * i + d];
-            v = m_.apic ? vg[d] : flip * (v + a[d] * dt) + (1.0 - flip) * vg[d];
-            double& x = p.x[D * i + d];
-            x += vg[d] * dt;
-            if (g.closed[2 * d] && x < g.origin[d]) x = g.origin[d];
-            const double top = g.origin[d] + g.spacing[d] * g.cells[d];
-            if (g.closed[2 * d + 1] && x > top) x = top;
+            a[d] += s.N[k] * g.acceleration[D * s.node[k] + d];
+            vg[d] += s.N[k] * g.velocity[D * s.node[k] + d];
         }
+    if (m_.apic) {
+        double* C = &p.C[D * D * i];
+        for (int k = 0; k < D * D; ++k) C[k] = 0.0;
+        for (int k = 0; k < s.count; ++k)
+            for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[D * s.node[k] + a] * s.dN[k][b];
+    }
+    const double flip = m_.flip;
+    for (int d = 0; d < D; ++d) {
+        double& v = p.v[D * i + d];
+        v = m_.apic ? vg[d] : flip * (v + a[d] * dt) + (1.0 - flip) * vg[d];
+        double& x = p.x[D * i + d];
+        x += vg[d] * dt;
+        if (g.closed[2 * d] && x < g.origin[d]) x = g.origin[d];
+        const double top = g.origin[d] + g.spacing[d] * g.cells[d];
+        if (g.closed[2 * d + 1] && x > top) x = top;
     }
 }
 
+// MUSL: the points' new momentum goes back to the grid for the velocities the stress
+// update uses. One pass over the points does both their update and this scatter (the
+// grid is only read until the scatter's sums are in).
 template <int D>
-void MpmSolver<D>::map_momentum_back() {
+void MpmSolver<D>::update_points_and_remap(double dt) {
     auto& p = m_.particles;
     auto& g = m_.grid;
     scatter(D, [&](long i, double* buf) {
+        grid_to_point(i, dt);
         const Stencil<D>& s = stencil_[i];
         const double* C = &p.C[D * D * i];
         for (int k = 0; k < s.count; ++k) {
@@ -361,13 +362,20 @@ void MpmSolver<D>::update_stress(double dt) {
             de[4] = de[5] = 0.0;
         }
         // Objective rotation of the stress and the material's tensor state by the spin.
-        double W[3][3] = {};
-        for (int a = 0; a < D; ++a)
-            for (int b = 0; b < D; ++b) W[a][b] = 0.5 * (L[a][b] - L[b][a]) * dt;
-        const Rotation rot = rotation_of_spin(W);
-        rotate_tensor(rot, &p.stress[6 * i]);
         double* st = p.state.data() + static_cast<std::size_t>(p.state_stride) * i;
-        for (int t = 0; t < tensor_states_[p.material[i]]; ++t) rotate_tensor(rot, st + 6 * t);
+        const int tensor_states = tensor_states_[p.material[i]];
+        if constexpr (D == 2) {
+            const double w = 0.5 * (L[0][1] - L[1][0]) * dt;
+            rotate_tensor_in_plane(w, &p.stress[6 * i]);
+            for (int t = 0; t < tensor_states; ++t) rotate_tensor_in_plane(w, st + 6 * t);
+        } else {
+            double W[3][3] = {};
+            for (int a = 0; a < D; ++a)
+                for (int b = 0; b < D; ++b) W[a][b] = 0.5 * (L[a][b] - L[b][a]) * dt;
+            const Rotation rot = rotation_of_spin(W);
+            rotate_tensor(rot, &p.stress[6 * i]);
+            for (int t = 0; t < tensor_states; ++t) rotate_tensor(rot, st + 6 * t);
+        }
         // Deformation gradient, volume and the accumulated strain.
         double Fn[D * D];
         for (int a = 0; a < D; ++a)
@@ -407,8 +415,7 @@ void MpmSolver<D>::step(double dt) {
     compute_stencils();
     particles_to_grid();
     update_grid(dt);
-    grid_to_particles(dt);
-    map_momentum_back();
+    update_points_and_remap(dt);
     update_stress(dt);
     time_ += dt;
     ++steps_;

@@ -65,8 +65,8 @@ private:
     void compute_stencils();
     void particles_to_grid();
     void update_grid(double dt);
-    void grid_to_particles(double dt);
-    void map_momentum_back();
+    void grid_to_point(long i, double dt);
+    void update_points_and_remap(double dt);
     void update_stress(double dt);
     template <class Accumulate>
     void scatter(int fields, Accumulate&& accumulate, std::vector<double>& out);

@@ -43,4 +43,18 @@ inline void rotate_tensor(const Rotation& r, double* t) {
     t[5] = out(0, 2);
 }
 
+// The same rotation for a plane spin (W_xy = w, the only component in 2D): R is the
+// in-plane block [[r, q], [-q, r]] with R_zz = 1, r = (1 - a^2)/(1 + a^2), q = 2a/(1 + a^2),
+// a = w/2; t <- R t R^T costs a third of the general product.
+inline void rotate_tensor_in_plane(double w, double* t) {
+    const double a = 0.5 * w, c = 2.0 / (1.0 + a * a);
+    const double r = 1.0 - c * a * a, q = c * a;
+    const double xx = t[0], yy = t[1], xy = t[3], yz = t[4], zx = t[5];
+    t[0] = r * r * xx + 2.0 * r * q * xy + q * q * yy;
+    t[1] = q * q * xx - 2.0 * r * q * xy + r * r * yy;
+    t[3] = r * q * (yy - xx) + (r * r - q * q) * xy;
+    t[5] = r * zx + q * yz;
+    t[4] = r * yz - q * zx;
+}
+
 }  // namespace pilempm::mpm

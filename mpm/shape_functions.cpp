@@ -139,36 +139,57 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
             if (weighted) H[i] = r.plain / W;
         }
     }
+    // Tensor product of the per-axis weights, written straight into the stencil: the
+    // nodes are distinct, so nothing accumulates. Entries with no weight and no gradient
+    // are left out. x runs fastest, as the nodes are numbered.
+    int stride[D], base = 0;
+    for (int d = 0; d < D; ++d) {
+        stride[d] = d == 0 ? 1 : stride[d - 1] * (g.cells[d - 1] + 1);
+        base += first[d] * stride[d];
+    }
+    if constexpr (D == 2) {  // the hot case, unrolled
+        for (int j = 0; j < n_axis[1]; ++j)
+            for (int i = 0; i < n_axis[0]; ++i) {
+                const double N = S[0][i] * S[1][j], gx = G[0][i] * S[1][j], gy = S[0][i] * G[1][j];
+                if (N == 0.0 && gx == 0.0 && gy == 0.0) continue;
+                const int k = s.count++;
+                s.node[k] = base + i + j * stride[1];
+                s.N[k] = N;
+                s.dN[k][0] = gx;
+                s.dN[k][1] = gy;
+                s.hoop[k] = axisymmetric ? H[i] * S[1][j] : 0.0;
+            }
+        return;
+    }
     int total = 1;
     for (int d = 0; d < D; ++d) total *= n_axis[d];
     for (int m = 0; m < total; ++m) {
-        int idx[D], rem = m;
-        std::array<int, D> c{};
+        int idx[D], rem = m, node = base;
         for (int d = 0; d < D; ++d) {
             idx[d] = rem % n_axis[d];
             rem /= n_axis[d];
-            c[d] = first[d] + idx[d];
+            node += idx[d] * stride[d];
         }
-        double N = 1.0;
+        double N = 1.0, grad[D];
         for (int d = 0; d < D; ++d) N *= S[d][idx[d]];
-        if (N == 0.0) {
-            bool any_gradient = false;
-            for (int d = 0; d < D && !any_gradient; ++d) any_gradient = G[d][idx[d]] != 0.0;
-            if (!any_gradient) continue;
-        }
-        const int k = s.append(g.node(c));
-        s.N[k] += N;
+        bool any = N != 0.0;
         for (int d = 0; d < D; ++d) {
-            double grad = G[d][idx[d]];
+            grad[d] = G[d][idx[d]];
             for (int e = 0; e < D; ++e)
-                if (e != d) grad *= S[e][idx[e]];
-            s.dN[k][d] += grad;
+                if (e != d) grad[d] *= S[e][idx[e]];
+            any = any || grad[d] != 0.0;
         }
+        if (!any) continue;
+        const int k = s.count++;
+        s.node[k] = node;
+        s.N[k] = N;
+        for (int d = 0; d < D; ++d) s.dN[k][d] = grad[d];
+        double hoop = 0.0;
         if (axisymmetric) {
-            double hoop = H[idx[0]];
+            hoop = H[idx[0]];
             for (int e = 1; e < D; ++e) hoop *= S[e][idx[e]];
-            s.hoop[k] += hoop;
         }
+        s.hoop[k] = hoop;
     }
 }
 

@@ -111,3 +111,17 @@ TEST(Objectivity, StepRotationsComposeToTheExactRotation) {
     EXPECT_NEAR(a, 0.5 * M_PI, 100 * std::pow(step, 3) / 12.0 * 1.01);
     EXPECT_NEAR(s[0], -100e3, 10.0);  // the quarter turn, to the angle error above
 }
+
+// The plane-spin shortcut the 2D solver takes is the general rotation with only W_xy.
+TEST(Objectivity, PlaneSpinShortcutEqualsTheGeneralRotation) {
+    for (double w : {1e-6, -0.03, 0.4, -1.7}) {
+        double W[3][3] = {};
+        W[0][1] = w;
+        W[1][0] = -w;
+        double general[6] = {-3.1e5, 1.2e4, -7.7e4, 2.3e4, -4.1e3, 5.9e3}, plane[6];
+        for (int k = 0; k < 6; ++k) plane[k] = general[k];
+        rotate_tensor(rotation_of_spin(W), general);
+        rotate_tensor_in_plane(w, plane);
+        for (int k = 0; k < 6; ++k) EXPECT_NEAR(plane[k], general[k], 1e-10) << "w " << w << " component " << k;
+    }
+}
