@@ -83,32 +83,19 @@ double MpmSolver<D>::stable_time_step() const {
     return c_max > 0.0 ? m_.cfl * h / c_max : 1e300;
 }
 
+// Every point must lie in the grid before its stencil is built (checked first, since
+// nothing may throw inside a parallel region).
 template <int D>
-void MpmSolver<D>::compute_stencils() {
-    auto& p = m_.particles;
+void MpmSolver<D>::check_points_inside() const {
+    const auto& p = m_.particles;
     const long n = static_cast<long>(p.size());
     int outside = 0;
     long first_outside = n;
 #pragma omp parallel for schedule(static) reduction(+ : outside) reduction(min : first_outside) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
-        if (!m_.grid.inside(&p.x[D * i])) {  // no throwing inside a parallel region
-            ++outside;
-            first_outside = std::min(first_outside, i);
-            continue;
-        }
-        // Half-edge vectors of the domain: undeformed for uGIMP, F-deformed for CPDI.
-        double half[D * D];
-        for (int k = 0; k < D; ++k)
-            for (int d = 0; d < D; ++d) {
-                double v = 0.0;
-                if (m_.shape == ShapeKind::CPDI) {
-                    for (int e = 0; e < D; ++e) v += p.F[D * D * i + D * d + e] * p.domain0[D * D * i + D * k + e];
-                } else {
-                    v = p.domain0[D * D * i + D * k + d];
-                }
-                half[D * k + d] = 0.5 * v;
-            }
-        evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &p.x[D * i], half, stencil_[i]);
+        if (m_.grid.inside(&p.x[D * i])) continue;
+        ++outside;
+        first_outside = std::min(first_outside, i);
     }
     if (outside > 0) {
         std::string where;
@@ -117,6 +104,24 @@ void MpmSolver<D>::compute_stencils() {
                                  std::to_string(first_outside) + ") at (" + where + ") m at t = " +
                                  std::to_string(time_) + " s");
     }
+}
+
+template <int D>
+void MpmSolver<D>::build_stencil(long i) {
+    const auto& p = m_.particles;
+    // Half-edge vectors of the domain: undeformed for uGIMP, F-deformed for CPDI.
+    double half[D * D];
+    for (int k = 0; k < D; ++k)
+        for (int d = 0; d < D; ++d) {
+            double v = 0.0;
+            if (m_.shape == ShapeKind::CPDI) {
+                for (int e = 0; e < D; ++e) v += p.F[D * D * i + D * d + e] * p.domain0[D * D * i + D * k + e];
+            } else {
+                v = p.domain0[D * D * i + D * k + d];
+            }
+            half[D * k + d] = 0.5 * v;
+        }
+    evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &p.x[D * i], half, stencil_[i]);
 }
 
 // Each thread accumulates into its own copy of `fields` values per node; then they are
@@ -150,7 +155,9 @@ void MpmSolver<D>::particles_to_grid() {
     auto& p = m_.particles;
     auto& g = m_.grid;
     constexpr int F = 1 + 3 * D;  // mass, momentum, total force, external force
+    // Each point's stencil is built here and used at once, while it is in cache.
     scatter(F, [&](long i, double* buf) {
+        build_stencil(i);
         const Stencil<D>& s = stencil_[i];
         const double mass = p.mass[i], vol = p.volume[i];
         const double* v = &p.v[D * i];
@@ -412,7 +419,7 @@ void MpmSolver<D>::update_stress(double dt) {
 
 template <int D>
 void MpmSolver<D>::step(double dt) {
-    compute_stencils();
+    check_points_inside();
     particles_to_grid();
     update_grid(dt);
     update_points_and_remap(dt);

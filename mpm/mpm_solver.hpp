@@ -62,7 +62,8 @@ public:
 
 private:
     void velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C, double* out) const;
-    void compute_stencils();
+    void check_points_inside() const;
+    void build_stencil(long i);
     void particles_to_grid();
     void update_grid(double dt);
     void grid_to_point(long i, double dt);
