@@ -55,7 +55,7 @@ void apply_wall(int wall, double friction, double* v) {
 // The velocity a point carries to node k of its stencil: its own, plus with APIC its
 // affine field C (x_node - x_point).
 template <int D>
-void MpmSolver<D>::velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C,
+inline void MpmSolver<D>::velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C,
                                         double* out) const {
     for (int d = 0; d < D; ++d) out[d] = v[d];
     if (!m_.apic) return;
@@ -159,20 +159,24 @@ void MpmSolver<D>::particles_to_grid() {
     scatter(F, [&](long i, double* buf) {
         build_stencil(i);
         const Stencil<D>& s = stencil_[i];
+        // The point's loads, read once: the writes to buf could alias them otherwise.
         const double mass = p.mass[i], vol = p.volume[i];
-        const double* v = &p.v[D * i];
         const double* sg = &p.stress[6 * i];
-        // Stress rows in D dimensions: [xx xy xz; xy yy yz; xz yz zz].
-        double S[D][D];
-        S[0][0] = sg[0];
-        S[1][1] = sg[1];
-        S[0][1] = S[1][0] = sg[3];
+        double VS[D][D], body[D], v[D], C[D * D];  // vol x stress rows [xx xy xz; xy yy yz; xz yz zz]
+        VS[0][0] = vol * sg[0];
+        VS[1][1] = vol * sg[1];
+        VS[0][1] = VS[1][0] = vol * sg[3];
         if constexpr (D == 3) {
-            S[2][2] = sg[2];
-            S[1][2] = S[2][1] = sg[4];
-            S[0][2] = S[2][0] = sg[5];
+            VS[2][2] = vol * sg[2];
+            VS[1][2] = VS[2][1] = vol * sg[4];
+            VS[0][2] = VS[2][0] = vol * sg[5];
         }
-        const double* C = &p.C[D * D * i];
+        for (int d = 0; d < D; ++d) {
+            body[d] = mass * m_.gravity[d] + p.external_force[D * i + d];
+            v[d] = p.v[D * i + d];
+        }
+        for (int k = 0; k < D * D; ++k) C[k] = p.C[D * D * i + k];
+        const double hoop_force = m_.axisymmetric ? vol * sg[2] : 0.0;
         for (int k = 0; k < s.count; ++k) {
             double* b = buf + F * s.node[k];
             const double N = s.N[k];
@@ -181,13 +185,13 @@ void MpmSolver<D>::particles_to_grid() {
             velocity_toward_node(s, k, v, C, vn);
             for (int d = 0; d < D; ++d) {
                 b[1 + d] += N * mass * vn[d];
-                const double external = N * (mass * m_.gravity[d] + p.external_force[D * i + d]);
+                const double external = N * body[d];
                 double f = external;
-                for (int e = 0; e < D; ++e) f -= vol * S[d][e] * s.dN[k][e];
+                for (int e = 0; e < D; ++e) f -= VS[d][e] * s.dN[k][e];
                 b[1 + D + d] += f;
                 b[1 + 2 * D + d] += external;
             }
-            if (m_.axisymmetric) b[1 + D] -= vol * sg[2] * s.hoop[k];  // hoop stress on f_r
+            b[1 + D] -= hoop_force * s.hoop[k];  // hoop stress on f_r (hoop is zero in plane strain)
         }
     }, scratch_);
     const int nn = g.num_nodes();

@@ -63,23 +63,33 @@ Hat1D integrate_hat(double xi, double h, double a, double b, bool weighted) {
     return r;
 }
 
-// Closed-form uGIMP weight and slope (Bardenhagen & Kober 2004) for xi = x_p - x_i and
-// half-length l <= h/2: the same values integrate_hat gives, without the quadrature.
-inline void ugimp_closed_form(double xi, double l, double h, double& S, double& G) {
-    const double a = std::abs(xi), sgn = xi >= 0.0 ? 1.0 : -1.0;
-    if (a < l) {
-        S = 1.0 - (xi * xi + l * l) / (2.0 * h * l);
-        G = -xi / (h * l);
-    } else if (a <= h - l) {
-        S = 1.0 - a / h;
-        G = -sgn / h;
-    } else if (a < h + l) {
-        const double d = h + l - a;
-        S = d * d / (4.0 * h * l);
-        G = -sgn * d / (2.0 * h * l);
-    } else {
-        S = G = 0.0;
+// uGIMP along one axis for a half-length l <= h/2 without a radial weight: the nodes
+// first.. that the domain [x - l, x + l] reaches (2 or 3; 4 only on a knife edge), with
+// the closed-form weight and slope of Bardenhagen & Kober (2004), the values
+// integrate_hat gives, written in cell units so that no division is left in the loop.
+inline int ugimp_axis(double x, double l, double origin, double h, int cells, int& first, double* S, double* G) {
+    const double inv_h = 1.0 / h, u = (x - origin) * inv_h, lam = l * inv_h;
+    const double inv_lam = 1.0 / lam;
+    const int lo = std::max(0, static_cast<int>(std::floor(u - lam)));
+    const int hi = std::min(cells, static_cast<int>(std::ceil(u + lam)));
+    first = lo;
+    for (int i = 0; i <= hi - lo; ++i) {
+        const double xi = u - (lo + i), a = std::abs(xi), sgn = xi >= 0.0 ? 1.0 : -1.0;
+        if (a < lam) {
+            S[i] = 1.0 - 0.5 * (xi * xi + lam * lam) * inv_lam;
+            G[i] = -xi * inv_lam * inv_h;
+        } else if (a <= 1.0 - lam) {
+            S[i] = 1.0 - a;
+            G[i] = -sgn * inv_h;
+        } else if (a < 1.0 + lam) {
+            const double d = 1.0 + lam - a;
+            S[i] = 0.25 * d * d * inv_lam;
+            G[i] = -0.5 * sgn * d * inv_lam * inv_h;
+        } else {
+            S[i] = G[i] = 0.0;
+        }
     }
+    return hi - lo + 1;
 }
 
 template <int D>
@@ -121,6 +131,10 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
     for (int d = 0; d < D; ++d) {
         const double l = half_domain[d * D + d], h = g.spacing[d];
         const bool weighted = axisymmetric && d == 0;
+        if (!weighted && l <= 0.5 * h) {
+            n_axis[d] = ugimp_axis(x[d], l, g.origin[d], h, g.cells[d], first[d], S[d], G[d]);
+            continue;
+        }
         const double a = x[d] - l, b = x[d] + l;
         const double W = weighted ? 2.0 * l * x[d] : 2.0 * l;  // int w ds over the domain
         const int lo = std::max(0, static_cast<int>(std::floor((a - g.origin[d]) / h)));
@@ -129,10 +143,6 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
         n_axis[d] = hi - lo + 1;
         if (n_axis[d] > 4) throw std::logic_error("GIMP domain larger than a cell");
         for (int i = 0; i < n_axis[d]; ++i) {
-            if (!weighted && l <= 0.5 * h) {
-                ugimp_closed_form(x[d] - g.coordinate(d, lo + i), l, h, S[d][i], G[d][i]);
-                continue;
-            }
             const Hat1D r = integrate_hat(g.coordinate(d, lo + i), h, a, b, weighted);
             S[d][i] = r.value / W;
             G[d][i] = r.slope / W;
