@@ -620,4 +620,17 @@ TEST_F(CaseValidation, CliGoodRunWritesEverything) {
     EXPECT_TRUE(leftovers(out).empty());
 }
 
+// Every case shipped in cases/ (examples, verification, studies) passes `pilempm check`:
+// a key renamed in the reader cannot leave a stale case behind.
+TEST_F(CaseValidation, EveryShippedCaseIsValid) {
+    int checked = 0;
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(PILEMPM_SOURCE_DIR) / "cases")) {
+        if (e.path().extension() != ".yaml") continue;
+        const CliResult r = cli("check " + quoted(e.path().string()));
+        EXPECT_EQ(r.status, 0) << e.path() << ": " << r.err;
+        ++checked;
+    }
+    EXPECT_GT(checked, 30);
+}
+
 }  // namespace
