@@ -72,7 +72,9 @@ double MpmSolver<D>::stable_time_step() const {
     double h = m_.grid.spacing[0];
     for (int d = 1; d < D; ++d) h = std::min(h, m_.grid.spacing[d]);
     double c_max = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    const long n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static) reduction(max : c_max) if (n > kParallelPoints)
+    for (long i = 0; i < n; ++i) {
         const double rho = p.mass[i] / p.volume[i];
         double speed = 0.0;
         for (int d = 0; d < D; ++d) speed += p.v[D * i + d] * p.v[D * i + d];
