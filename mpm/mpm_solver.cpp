@@ -59,7 +59,7 @@ inline void MpmSolver<D>::velocity_toward_node(const Stencil<D>& s, int k, const
                                         double* out) const {
     for (int d = 0; d < D; ++d) out[d] = v[d];
     if (!m_.apic) return;
-    const double* xn = &m_.grid.position[D * s.node[k]];
+    const double* xn = &m_.grid.position[D * s.e[k].node];
     double dx[D];
     for (int d = 0; d < D; ++d) dx[d] = xn[d] - s.x[d];
     for (int d = 0; d < D; ++d)
@@ -180,8 +180,8 @@ void MpmSolver<D>::particles_to_grid() {
         for (int k = 0; k < D * D; ++k) C[k] = p.C[D * D * i + k];
         const double hoop_force = m_.axisymmetric ? vol * sg[2] : 0.0;
         for (int k = 0; k < s.count; ++k) {
-            double* b = buf + F * s.node[k];
-            const double N = s.N[k];
+            double* b = buf + F * s.e[k].node;
+            const double N = s.e[k].N;
             b[0] += N * mass;
             double vn[D];
             velocity_toward_node(s, k, v, C, vn);
@@ -189,11 +189,11 @@ void MpmSolver<D>::particles_to_grid() {
                 b[1 + d] += N * mass * vn[d];
                 const double external = N * body[d];
                 double f = external;
-                for (int e = 0; e < D; ++e) f -= VS[d][e] * s.dN[k][e];
+                for (int e = 0; e < D; ++e) f -= VS[d][e] * s.e[k].dN[e];
                 b[1 + D + d] += f;
                 b[1 + 2 * D + d] += external;
             }
-            b[1 + D] -= hoop_force * s.hoop[k];  // hoop stress on f_r (hoop is zero in plane strain)
+            if (hoop_force != 0.0) b[1 + D] -= hoop_force * s.hoop[k];  // hoop stress on f_r (axisymmetric)
         }
     }, scratch_);
     const int nn = g.num_nodes();
@@ -218,8 +218,8 @@ void MpmSolver<D>::particles_to_grid() {
         evaluate_shape<D>(g, ShapeKind::Linear, false, x, nullptr, at_face);
         for (int k = 0; k < at_face.count; ++k)
             for (int d = 0; d < D; ++d) {
-                g.force[D * at_face.node[k] + d] += at_face.N[k] * load.force[d];
-                external_[D * at_face.node[k] + d] += at_face.N[k] * load.force[d];
+                g.force[D * at_face.e[k].node + d] += at_face.e[k].N * load.force[d];
+                external_[D * at_face.e[k].node + d] += at_face.e[k].N * load.force[d];
             }
     }
 }
@@ -291,15 +291,15 @@ void MpmSolver<D>::grid_to_point(long i, double dt) {
     double a[D] = {}, vg[D] = {};
     for (int k = 0; k < s.count; ++k)
         for (int d = 0; d < D; ++d) {
-            a[d] += s.N[k] * g.acceleration[D * s.node[k] + d];
-            vg[d] += s.N[k] * g.velocity[D * s.node[k] + d];
+            a[d] += s.e[k].N * g.acceleration[D * s.e[k].node + d];
+            vg[d] += s.e[k].N * g.velocity[D * s.e[k].node + d];
         }
     if (m_.apic) {
         double* C = &p.C[D * D * i];
         for (int k = 0; k < D * D; ++k) C[k] = 0.0;
         for (int k = 0; k < s.count; ++k)
             for (int a = 0; a < D; ++a)
-                for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[D * s.node[k] + a] * s.dN[k][b];
+                for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[D * s.e[k].node + a] * s.e[k].dN[b];
     }
     const double flip = m_.flip;
     for (int d = 0; d < D; ++d) {
@@ -327,7 +327,7 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
         for (int k = 0; k < s.count; ++k) {
             double vn[D];
             velocity_toward_node(s, k, &p.v[D * i], C, vn);
-            for (int d = 0; d < D; ++d) buf[D * s.node[k] + d] += s.N[k] * p.mass[i] * vn[d];
+            for (int d = 0; d < D; ++d) buf[D * s.e[k].node + d] += s.e[k].N * p.mass[i] * vn[d];
         }
     }, scratch_);
     const int nn = g.num_nodes();
@@ -357,9 +357,9 @@ void MpmSolver<D>::update_stress(double dt) {
         const Stencil<D>& s = stencil_[i];
         double L[D][D] = {}, hoop = 0.0;
         for (int k = 0; k < s.count; ++k) {
-            const double* v = &g.velocity[D * s.node[k]];
+            const double* v = &g.velocity[D * s.e[k].node];
             for (int a = 0; a < D; ++a)
-                for (int b = 0; b < D; ++b) L[a][b] += v[a] * s.dN[k][b];
+                for (int b = 0; b < D; ++b) L[a][b] += v[a] * s.e[k].dN[b];
             if (m_.axisymmetric) hoop += v[0] * s.hoop[k];
         }
         double* de = &p.dstrain[6 * i];

@@ -9,17 +9,17 @@ namespace pilempm::mpm {
 template <int D>
 int Stencil<D>::slot(int n) {
     for (int k = 0; k < count; ++k)
-        if (node[k] == n) return k;
+        if (e[k].node == n) return k;
     return append(n);
 }
 
 template <int D>
 int Stencil<D>::append(int n) {
     if (count >= kMax) throw std::logic_error("shape function stencil overflow");
-    node[count] = n;
-    N[count] = 0.0;
+    e[count].node = n;
+    e[count].N = 0.0;
     hoop[count] = 0.0;
-    for (int d = 0; d < D; ++d) dN[count][d] = 0.0;
+    for (int d = 0; d < D; ++d) e[count].dN[d] = 0.0;
     return count++;
 }
 
@@ -112,12 +112,12 @@ void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s)
         const int k = s.append(g.node(c));
         double N = 1.0;
         for (int d = 0; d < D; ++d) N *= w[d];
-        s.N[k] += N;
+        s.e[k].N += N;
         for (int d = 0; d < D; ++d) {
             double grad = dw[d];
             for (int e = 0; e < D; ++e)
                 if (e != d) grad *= w[e];
-            s.dN[k][d] += grad;
+            s.e[k].dN[d] += grad;
         }
         if (axisymmetric) s.hoop[k] += N / x[0];
     }
@@ -163,10 +163,10 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
                 const double N = S[0][i] * S[1][j], gx = G[0][i] * S[1][j], gy = S[0][i] * G[1][j];
                 if (N == 0.0 && gx == 0.0 && gy == 0.0) continue;
                 const int k = s.count++;
-                s.node[k] = base + i + j * stride[1];
-                s.N[k] = N;
-                s.dN[k][0] = gx;
-                s.dN[k][1] = gy;
+                s.e[k].node = base + i + j * stride[1];
+                s.e[k].N = N;
+                s.e[k].dN[0] = gx;
+                s.e[k].dN[1] = gy;
                 s.hoop[k] = axisymmetric ? H[i] * S[1][j] : 0.0;
             }
         return;
@@ -191,9 +191,9 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
         }
         if (!any) continue;
         const int k = s.count++;
-        s.node[k] = node;
-        s.N[k] = N;
-        for (int d = 0; d < D; ++d) s.dN[k][d] = grad[d];
+        s.e[k].node = node;
+        s.e[k].N = N;
+        for (int d = 0; d < D; ++d) s.e[k].dN[d] = grad[d];
         double hoop = 0.0;
         if (axisymmetric) {
             hoop = H[idx[0]];
@@ -267,17 +267,17 @@ void cpdi(const Grid<D>& g, bool axisymmetric, const double* x, const double* r,
                 for (int k = 0; k < D; ++k) gradL[d] += Jinv[k][d] * dL[k];
             }
             for (int e = 0; e < corner[c].count; ++e) {
-                const int k = s.slot(corner[c].node[e]);
-                const double Nc = corner[c].N[e];
-                s.N[k] += L * Nc * w;
-                for (int d = 0; d < D; ++d) s.dN[k][d] += gradL[d] * Nc * w;
+                const int k = s.slot(corner[c].e[e].node);
+                const double Nc = corner[c].e[e].N;
+                s.e[k].N += L * Nc * w;
+                for (int d = 0; d < D; ++d) s.e[k].dN[d] += gradL[d] * Nc * w;
                 if (axisymmetric) s.hoop[k] += L * Nc;
             }
         }
     }
     for (int k = 0; k < s.count; ++k) {
-        s.N[k] /= W;
-        for (int d = 0; d < D; ++d) s.dN[k][d] /= W;
+        s.e[k].N /= W;
+        for (int d = 0; d < D; ++d) s.e[k].dN[d] /= W;
         s.hoop[k] /= W;
     }
 }

@@ -15,10 +15,15 @@ enum class ShapeKind { Linear, GIMP, CPDI };
 template <int D>
 struct Stencil {
     static constexpr int kMax = D == 2 ? 16 : 64;
+    // One entry per node, its fields together: the passes over the points read the first
+    // `count` entries as one contiguous block.
+    struct Entry {
+        int node;
+        double N;
+        double dN[D];
+    };
     int count = 0;
-    int node[kMax];
-    double N[kMax];
-    double dN[kMax][D];
+    Entry e[kMax];
     double hoop[kMax];  // axisymmetric only (zero otherwise)
     double x[D];        // where the point was when the stencil was built
     void clear() { count = 0; }

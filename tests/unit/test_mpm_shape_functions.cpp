@@ -32,11 +32,11 @@ void check_consistency(ShapeKind kind, bool axisymmetric, const double* x, const
     double sumN = 0.0, sum_hoop_r = 0.0;
     double sum_dN[D] = {}, grad_x[D][D] = {};
     for (int k = 0; k < s.count; ++k) {
-        const auto c = g.ijk(s.node[k]);
-        sumN += s.N[k];
+        const auto c = g.ijk(s.e[k].node);
+        sumN += s.e[k].N;
         for (int d = 0; d < D; ++d) {
-            sum_dN[d] += s.dN[k][d];
-            for (int e = 0; e < D; ++e) grad_x[d][e] += s.dN[k][d] * g.coordinate(e, c[e]);
+            sum_dN[d] += s.e[k].dN[d];
+            for (int e = 0; e < D; ++e) grad_x[d][e] += s.e[k].dN[d] * g.coordinate(e, c[e]);
         }
         sum_hoop_r += s.hoop[k] * g.coordinate(0, c[0]);
     }
@@ -95,7 +95,7 @@ TEST(MpmShapeFunctions, GimpIsSmoothAcrossACellFace) {
     evaluate_shape<2>(g, ShapeKind::GIMP, false, xb, half, b);
     auto grad_x_of = [](const Stencil<2>& s, int node) {
         for (int k = 0; k < s.count; ++k)
-            if (s.node[k] == node) return s.dN[k][0];
+            if (s.e[k].node == node) return s.e[k].dN[0];
         return 0.0;
     };
     const int node = g.node({3, 3});
