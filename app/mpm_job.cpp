@@ -19,6 +19,7 @@
 #include "io/mpm_checkpoint.hpp"
 #include "io/staged_directory.hpp"
 #include "io/vtk_particle_writer.hpp"
+#include "coupling/granular_collapse.hpp"
 #include "mpm/mohr_coulomb.hpp"
 #include "mpm/mpm_solver.hpp"
 
@@ -363,6 +364,17 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     }
     vtk.finish();
     io::write_csv(staged.path() / "history.csv", history);
+    if constexpr (D == 2) {
+        // A collapse's final deposit, one row per grid column, for comparison with profiles.
+        if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "granular_runout") !=
+            c.verification_checks.end()) {
+            const auto thickness = coupling::deposit_profile(m);
+            Table profile("deposit_profile", {c.axisymmetric ? "r_centre_m" : "x_centre_m", "thickness_m"});
+            for (std::size_t k = 0; k < thickness.size(); ++k)
+                profile.add_row({m.grid.coordinate(0, static_cast<int>(k)) + 0.5 * m.grid.spacing[0], thickness[k]});
+            io::write_csv(staged.path() / "deposit_profile.csv", profile);
+        }
+    }
 
     io::JsonObject summary;
     summary.add("title", c.title).add("case_file", c.file).add("analysis", std::string("mpm"))

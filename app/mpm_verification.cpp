@@ -147,15 +147,32 @@ VerificationCheck k0_ratio(const io::MpmCase& c, const mpm::MpmModel<D>& m) {
                       "|sigma_h / sigma_v - K0| over the points after the nil step");
 }
 
+// The run-out at the deposit's front and, with verification.front_thickness (m, 2D), where
+// the deposit first thins below that thickness; both against the same law.
 template <int D>
-VerificationCheck runout(const io::MpmCase& c, const mpm::MpmModel<D>& m) {
+std::vector<VerificationCheck> runout(const io::MpmCase& c, const mpm::MpmModel<D>& m) {
     const double width = parameter(c, "initial_width", "granular_runout");
     const double height = parameter(c, "height", "granular_runout");
-    const double computed = (coupling::deposit_front<D>(m) - c.origin[0] - width) / width;
     const bool axi = D == 2 && c.axisymmetric;
-    return make_check("normalised_runout", computed, coupling::lube_runout(height / width, axi), 0.15, true,
-                      std::string("(L_f - L_0) / L_0 of the deposit against Lube et al. (") + (axi ? "2004" : "2005") +
-                          ") at a = H / L_0");
+    const double reference = coupling::lube_runout(height / width, axi);
+    const std::string law = std::string("Lube et al. (") + (axi ? "2004" : "2005") + ") at a = H / L_0";
+    std::vector<VerificationCheck> out;
+    const double computed = (coupling::deposit_front<D>(m) - c.origin[0] - width) / width;
+    out.push_back(make_check("normalised_runout", computed, reference, 0.15, true,
+                             "(L_f - L_0) / L_0 of the deposit against " + law));
+    if (c.verification.count("front_thickness")) {
+        if constexpr (D == 2) {
+            const double t = c.verification.at("front_thickness");
+            const double front = coupling::thickness_front(m, coupling::deposit_profile(m), t);
+            out.push_back(make_check("normalised_runout_at_thickness", (front - c.origin[0] - width) / width,
+                                     reference, 0.15, true,
+                                     "(L_f - L_0) / L_0 where the deposit first thins below " + std::to_string(t) +
+                                         " m, against " + law));
+        } else {
+            throw std::invalid_argument("verification.front_thickness is read off a 2D deposit profile");
+        }
+    }
+    return out;
 }
 
 template <int D>
@@ -176,7 +193,10 @@ std::vector<VerificationCheck> run_mpm_verification(const io::MpmCase& c, const 
         else if (name == "stress_noise") continue;  // needs a second run: done by the job
         else if (name == "k0_ratio") out.push_back(k0_ratio<D>(c, m));
         else if (name == "footing_collapse") out.push_back(footing(c, history, D));
-        else if (name == "granular_runout") out.push_back(runout<D>(c, m));
+        else if (name == "granular_runout") {
+            auto v = runout<D>(c, m);
+            out.insert(out.end(), v.begin(), v.end());
+        }
         else throw std::invalid_argument("verification check " + name + " is not available yet for MPM cases");
     }
     return out;

@@ -19,6 +19,24 @@ double deposit_front(const mpm::MpmModel<D>& m) {
     return front;
 }
 
+std::vector<double> deposit_profile(const mpm::MpmModel<2>& m) {
+    const auto& g = m.grid;
+    std::vector<double> volume(g.cells[0], 0.0);
+    for (std::size_t i = 0; i < m.particles.size(); ++i)
+        volume[g.cell_of(0, m.particles.x[2 * i])] += m.particles.volume[i];
+    for (int k = 0; k < g.cells[0]; ++k) {
+        const double r1 = g.coordinate(0, k), r2 = g.coordinate(0, k + 1);
+        volume[k] /= m.axisymmetric ? 0.5 * (r2 * r2 - r1 * r1) : r2 - r1;
+    }
+    return volume;
+}
+
+double thickness_front(const mpm::MpmModel<2>& m, const std::vector<double>& profile, double thickness) {
+    std::size_t k = 0;
+    while (k < profile.size() && profile[k] >= thickness) ++k;
+    return m.grid.coordinate(0, static_cast<int>(k));
+}
+
 double lube_runout(double a, bool axisymmetric) {
     if (axisymmetric) return a < 1.7 ? 1.24 * a : 1.6 * std::sqrt(a);
     auto tall = [](double x) { return 1.9 * std::cbrt(x * x); };

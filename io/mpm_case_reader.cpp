@@ -200,6 +200,8 @@ MpmCase read_mpm_case(const std::string& file) {
         for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
                                 "footing_width", "reference", "initial_width", "height"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
+        if (v->has("front_thickness"))
+            c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
         v->finish();
     }
     root.finish();

@@ -35,3 +35,32 @@ TEST(GranularCollapse, DepositFrontStopsAtAnEmptyCell) {
     m.particles.add(bridge, 1.0, 1.0, len, 0);
     EXPECT_DOUBLE_EQ(coupling::deposit_front<2>(m), 0.75);
 }
+
+// A wedge of points 0.1 m high at x = 0 thinning to nothing at x = 0.4 m: the profile is
+// the wedge's thickness per column, in plane strain and (volume per radian) axisymmetry,
+// and the front read at 0.02 m is where the wedge is that thin, to one column.
+TEST(GranularCollapse, DepositProfileAndThicknessFront) {
+    for (bool axisymmetric : {false, true}) {
+        mpm::MpmModel<2> m;
+        m.axisymmetric = axisymmetric;
+        m.grid.origin = {0.0, 0.0};
+        m.grid.spacing = {0.01, 0.01};
+        m.grid.cells = {60, 12};
+        const double h = 0.0025, len[2] = {h, h};
+        for (double x = 0.5 * h; x < 0.4; x += h)
+            for (double y = 0.5 * h; y < 0.1 * (1.0 - x / 0.4); y += h) {
+                const double pos[2] = {x, y};
+                const double vol = h * h * (axisymmetric ? x : 1.0);
+                m.particles.add(pos, vol, vol, len, 0);
+            }
+        const auto profile = coupling::deposit_profile(m);
+        ASSERT_EQ(profile.size(), 60u);
+        for (int k : {5, 15, 25}) {
+            const double xc = 0.01 * (k + 0.5), wedge = 0.1 * (1.0 - xc / 0.4);
+            EXPECT_NEAR(profile[k], wedge, 0.004) << "column " << k << (axisymmetric ? " axisymmetric" : "");
+        }
+        EXPECT_EQ(profile[45], 0.0);
+        const double front = coupling::thickness_front(m, profile, 0.02);  // wedge 0.02 m thick at 0.32 m
+        EXPECT_NEAR(front, 0.32, 0.0101) << (axisymmetric ? "axisymmetric" : "plane strain");
+    }
+}
