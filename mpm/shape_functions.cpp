@@ -157,20 +157,6 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
         stride[d] = d == 0 ? 1 : stride[d - 1] * (g.cells[d - 1] + 1);
         base += first[d] * stride[d];
     }
-    if constexpr (D == 2) {  // the hot case, unrolled
-        for (int j = 0; j < n_axis[1]; ++j)
-            for (int i = 0; i < n_axis[0]; ++i) {
-                const double N = S[0][i] * S[1][j], gx = G[0][i] * S[1][j], gy = S[0][i] * G[1][j];
-                if (N == 0.0 && gx == 0.0 && gy == 0.0) continue;
-                const int k = s.count++;
-                s.e[k].node = base + i + j * stride[1];
-                s.e[k].N = N;
-                s.e[k].dN[0] = gx;
-                s.e[k].dN[1] = gy;
-                s.hoop[k] = axisymmetric ? H[i] * S[1][j] : 0.0;
-            }
-        return;
-    }
     int total = 1;
     for (int d = 0; d < D; ++d) total *= n_axis[d];
     for (int m = 0; m < total; ++m) {
