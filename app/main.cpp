@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "app/drivability_job.hpp"
-#include "app/element_test_job.hpp"
-#include "app/mpm_job.hpp"
-#include "app/pile_wave_job.hpp"
-#include "io/drivability_case.hpp"
-#include "io/case_error.hpp"
+#include "app/jobs/drivability_job.hpp"
+#include "app/jobs/element_test_job.hpp"
+#include "app/jobs/mpm_job.hpp"
+#include "app/jobs/pile_wave_job.hpp"
+#include "io/cases/drivability_case.hpp"
+#include "io/yaml/case_error.hpp"
 
 namespace {
 

@@ -7,11 +7,11 @@
 #include <numeric>
 #include <vector>
 
-#include "mpm/hypoplastic.hpp"
-#include "mpm/hardening_soil_small.hpp"
-#include "mpm/modified_cam_clay.hpp"
-#include "mpm/mohr_coulomb.hpp"
-#include "mpm/subloading_cam_clay.hpp"
+#include "mpm/materials/hypoplastic.hpp"
+#include "mpm/materials/hardening_soil_small.hpp"
+#include "mpm/materials/modified_cam_clay.hpp"
+#include "mpm/materials/mohr_coulomb.hpp"
+#include "mpm/materials/subloading_cam_clay.hpp"
 
 using namespace pilempm::mpm;
 

@@ -2,8 +2,8 @@
 // Sea study on one thread. Run: build/tests/pilempm_benchmarks --benchmark_filter=Driv
 #include <benchmark/benchmark.h>
 
-#include "coupling/drivability.hpp"
-#include "io/drivability_case.hpp"
+#include "coupling/wave_equation/drivability.hpp"
+#include "io/cases/drivability_case.hpp"
 
 using namespace pilempm;
 

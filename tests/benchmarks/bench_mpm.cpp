@@ -4,9 +4,9 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
-#include "mpm/model_setup.hpp"
-#include "mpm/mohr_coulomb.hpp"
-#include "mpm/mpm_solver.hpp"
+#include "mpm/setup/model_setup.hpp"
+#include "mpm/materials/mohr_coulomb.hpp"
+#include "mpm/solver/mpm_solver.hpp"
 
 using namespace pilempm::mpm;
 

@@ -2,11 +2,11 @@
 // blow. Run: build/tests/pilempm_benchmarks  (not part of the test suite).
 #include <benchmark/benchmark.h>
 
-#include "coupling/pile_wave.hpp"
-#include "fem/axisymmetric_mesher.hpp"
-#include "fem/explicit_pile.hpp"
-#include "fem/rod_mesh.hpp"
-#include "io/pile_wave_case.hpp"
+#include "fem/pile_wave/pile_wave.hpp"
+#include "fem/mesh/axisymmetric_mesher.hpp"
+#include "fem/dynamics/explicit_pile.hpp"
+#include "fem/mesh/rod_mesh.hpp"
+#include "io/cases/pile_wave_case.hpp"
 
 using namespace pilempm;
 
@@ -58,7 +58,7 @@ void BM_NorthSeaBlow(benchmark::State& state, const char* case_file) {
     setup.snapshot_interval = 0.0;
     long steps = 0;
     for (auto _ : state) {
-        const auto r = coupling::run_pile_wave(setup);
+        const auto r = fem::run_pile_wave(setup);
         steps = r.summary.steps + 1;
         benchmark::DoNotOptimize(r.summary.peak_head_force);
     }

@@ -1,0 +1,182 @@
+#include "app/jobs/drivability_job.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+#include "io/writers/terminal_progress.hpp"
+#include "app/jobs/verification_runner.hpp"
+#include "coupling/wave_equation/drivability_verification.hpp"
+#include "io/writers/csv_writer.hpp"
+#include "io/cases/drivability_case.hpp"
+#include "io/hdf5/hdf5_results.hpp"
+#include "io/writers/json_writer.hpp"
+#include "io/writers/plots.hpp"
+#include "io/writers/staged_directory.hpp"
+
+namespace pilempm::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const char* type_name(coupling::SoilType t) { return t == coupling::SoilType::Sand ? "sand" : "clay"; }
+
+// The first case named best_estimate, else the first case: the one the checks use.
+const coupling::SoilCase& reference_case(const coupling::DrivabilitySetup& s) {
+    for (const auto& c : s.cases)
+        if (c.name == "best_estimate") return c;
+    return s.cases.front();
+}
+
+std::vector<VerificationCheck> run_checks(const io::DrivabilityCase& c, const coupling::DrivabilitySetup& s,
+                                          const coupling::DrivabilityResult& r) {
+    const double depth = c.verification_depth > 0.0 ? c.verification_depth : s.final_depth;
+    const auto& ref = reference_case(s);
+    std::vector<VerificationCheck> all;
+    auto append = [&all](std::vector<VerificationCheck> v) { all.insert(all.end(), v.begin(), v.end()); };
+    for (const auto& name : c.verification_checks) {
+        if (name == "static_push") append(coupling::check_static_push(s, ref, depth));
+        else if (name == "bearing_graph_monotonic") append(coupling::check_bearing_graph(r.bearing_graph));
+        else if (name == "blow_energy_balance") append(coupling::check_blow_energy(s, ref, depth));
+        else if (name == "danish_formula") {
+            const auto srd = coupling::srd_for_driving(s, ref, depth);
+            const auto p = coupling::drive_at_penetration(s.mesh, s.steel, srd, s.smith, s.hammer,
+                                                          s.ram_element_size, s.driving);
+            append(coupling::check_danish_formula(s, p));
+        } else if (name == "self_weight_penetration") {
+            for (const auto& run : r.runs)
+                if (run.soil_case == ref.name && run.energy_level == r.runs.front().energy_level)
+                    all.push_back(make_check(
+                        "self_weight_penetration_m", run.self_weight_penetration, c.observed_self_weight_penetration,
+                        c.observed_tolerance, false, "submerged pile weight against the " + ref.name + " SRD, observed depth"));
+        }
+    }
+    return all;
+}
+
+io::JsonObject summary_json(const io::DrivabilityCase& c, const coupling::DrivabilitySetup& s,
+                            const coupling::DrivabilityResult& r) {
+    io::JsonObject o;
+    o.add("title", c.title).add("case_file", c.file).add("analysis", std::string("drivability"))
+        .add("hammer", c.hammer_description)
+        .add("units", std::string("depths in m below the mudline, forces in N, stresses in Pa (compression and tension as magnitudes), energy in J"))
+        .add("refusal_blow_count", c.refusal_blow_count).add("hard_driving_blow_count", c.hard_driving_blow_count)
+        .add("depth_step_m", c.depth_step).add("pile_mass_kg", s.pile_mass)
+        .add("qc_correlation", std::string(c.soil.cpt.depth.empty() ? "Baldi et al. (1986), normally consolidated sand: q_c = 157 sigma'_v0^0.55 exp(2.41 D_R) (kPa)"
+                                                                    : "CPT record " + c.cpt_file));
+    if (c.rated_energy > 0.0) o.add("rated_energy_J", c.rated_energy);
+    std::vector<io::JsonObject> runs;
+    double worst_c = 0.0, worst_t = 0.0;
+    for (const auto& run : r.runs) {
+        io::JsonObject j;
+        j.add("file", run.table.name + ".csv").add("soil_case", run.soil_case).add("energy_level", run.energy_level)
+            .add("self_weight_penetration_m", run.self_weight_penetration)
+            .add("self_weight_penetration_with_hammer_m", run.self_weight_penetration_with_hammer)
+            .add("refusal_depth_m", run.refusal_depth >= 0.0 ? run.refusal_depth : kNaN)
+            .add("final_depth_reached_m", run.final_depth_reached).add("total_blows", run.total_blows)
+            .add("hard_driving_from_m", run.hard_driving_from >= 0.0 ? run.hard_driving_from : kNaN)
+            .add("max_compression_Pa", run.max_compression).add("max_compression_at_depth_m", run.max_compression_depth)
+            .add("max_tension_Pa", run.max_tension).add("max_tension_at_depth_m", run.max_tension_depth);
+        for (std::size_t k = 0; k < s.cases.size(); ++k)
+            if (s.cases[k].name == run.soil_case)
+                j.add("srd_method", std::string(coupling::srd_method_name(s.cases[k].method)))
+                    .add("srd_factor", s.cases[k].factor);
+        worst_c = std::max(worst_c, run.max_compression);
+        worst_t = std::max(worst_t, run.max_tension);
+        runs.push_back(std::move(j));
+    }
+    o.add("runs", runs).add("worst_compression_Pa", worst_c).add("worst_tension_Pa", worst_t);
+    if (r.bearing_graph.rows() > 0) o.add("bearing_graph_file", std::string("bearing_graph.csv"));
+    o.add("depth_points", static_cast<double>(r.depth_points)).add("blows_simulated", static_cast<double>(r.blows_simulated))
+        .add("wall_time_s", r.wall_time);
+    return o;
+}
+
+void print_summary(const io::DrivabilityCase& c, const coupling::DrivabilityResult& r, const fs::path& out) {
+    std::printf("%s\n", c.title.c_str());
+    std::printf("  %-16s %6s %10s %10s %12s %12s %10s\n", "soil case", "energy", "SWP (m)", "refusal", "total blows",
+                "max comp.", "max tens.");
+    for (const auto& run : r.runs) {
+        char refusal[32];
+        if (run.refusal_depth >= 0.0) std::snprintf(refusal, sizeof refusal, "%.2f m", run.refusal_depth);
+        else std::snprintf(refusal, sizeof refusal, "none");
+        std::printf("  %-16s %5.0f%% %10.2f %10s %12.0f %8.1f MPa %6.1f MPa\n", run.soil_case.c_str(),
+                    100 * run.energy_level, run.self_weight_penetration, refusal, run.total_blows,
+                    run.max_compression * 1e-6, run.max_tension * 1e-6);
+    }
+    std::printf("  %ld depth points, %ld blows simulated, wall time %.2f s\n", r.depth_points, r.blows_simulated,
+                r.wall_time);
+    std::printf("  results in %s\n", out.c_str());
+}
+
+}  // namespace
+
+int check_drivability_case(const std::string& file) {
+    const io::DrivabilityCase c = io::read_drivability_case(file);
+    const coupling::DrivabilitySetup s = io::build_drivability_setup(c);
+    std::printf("%s: valid\n", file.c_str());
+    std::printf("  title          %s\n", c.title.c_str());
+    std::printf("  analysis       wave-equation drivability, %.2f m to %.2f m every %.2f m\n",
+                c.start_depth >= 0 ? c.start_depth : 0.0, c.final_depth, c.depth_step);
+    if (c.start_depth < 0) std::printf("                 (starting at each soil case's self-weight penetration)\n");
+    std::printf("  pile           rod, L = %.2f m, %d elements of %.3g m, mass %.1f t, D = %.3f m, t = %.4f m\n",
+                c.length(), s.mesh.num_elements(), c.element_size, s.pile_mass * 1e-3, s.outer_diameter, s.wall_thickness);
+    std::printf("  hammer         %s\n", c.hammer_description.c_str());
+    std::printf("  soil           %zu layers, water depth %.1f m, q_c %s\n", c.soil.layers.size(), c.soil.water_depth,
+                c.soil.cpt.depth.empty() ? "from D_R (Baldi et al. 1986)" : "from the CPT record");
+    for (const auto& l : c.soil.layers)
+        std::printf("                 %6.2f - %6.2f m  %s  %s\n", l.top, l.bottom, type_name(l.type), l.name.c_str());
+    std::printf("  soil cases     ");
+    for (const auto& sc : c.cases)
+        std::printf("%s (%s x %.2f)  ", sc.name.c_str(), coupling::srd_method_name(sc.method), sc.factor);
+    std::printf("\n  SRD at %.2f m:", c.final_depth);
+    for (const auto& sc : c.cases)
+        std::printf("  %s %.2f MN", sc.name.c_str(), coupling::srd_for_driving(s, sc, c.final_depth).total() * 1e-6);
+    std::printf("\n  energy levels  %zu, threads %s\n", c.energy_levels.size(),
+                c.threads > 0 ? std::to_string(c.threads).c_str() : "all cores");
+    return 0;
+}
+
+int run_drivability_case(const std::string& file, const fs::path& out_dir, bool quiet) {
+    const io::DrivabilityCase c = io::read_drivability_case(file);
+    const coupling::DrivabilitySetup setup = io::build_drivability_setup(c);
+    io::StagedDirectory staged(out_dir);
+    io::TerminalProgress progress("drivability", !quiet);
+    const auto result = coupling::run_drivability(
+        setup, [&progress](long done, long total) { progress.update_count(done, total, "depth points"); });
+    progress.done();
+
+    std::vector<Table> tables;
+    for (const auto& run : result.runs) tables.push_back(run.table);
+    if (result.bearing_graph.rows() > 0) tables.push_back(result.bearing_graph);
+    for (const auto& t : tables) io::write_csv(staged.path() / (t.name + ".csv"), t);
+
+    io::JsonObject summary = summary_json(c, setup, result);
+    if (!c.verification_checks.empty()) {
+        const auto checks = run_checks(c, setup, result);
+        io::write_json(staged.path() / "verification.json", verification_json(c, checks, io::JsonObject{}));
+        if (!quiet)
+            for (const auto& k : checks)
+                std::printf("  [%s] %-40s computed %-14.6g reference %-14.6g tol %g\n", k.passed ? "pass" : "FAIL",
+                            k.name.c_str(), k.computed, k.reference, k.tolerance);
+    }
+    io::write_results_h5(staged.path() / "results.h5", tables, setup.mesh, {}, {}, {},
+                         {{"depth_points", static_cast<double>(result.depth_points)},
+                          {"wall_time_s", result.wall_time}},
+                         {{"title", c.title}, {"case_file", c.file}, {"analysis", "drivability"}});
+    io::write_json(staged.path() / "summary.json", summary);
+    if (c.plots) {
+        std::string note;
+        if (!io::make_plots("plot_drivability.py", staged.path(), note) && !quiet)
+            std::fprintf(stderr, "note: %s\n", note.c_str());
+    }
+    staged.commit();
+    if (!quiet) print_summary(c, result, out_dir);
+    return 0;
+}
+
+}  // namespace pilempm::app

@@ -1,0 +1,158 @@
+#include "fem/dynamics/explicit_pile.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace pilempm::fem {
+
+ExplicitPile::ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSupport toe)
+    : mesh_(std::move(mesh)), steel_(steel), toe_(toe) {
+    ops_ = assemble_pile_operators(mesh_, steel);
+    const int n = mesh_.num_dofs();
+    u_.assign(n, 0.0);
+    v_.assign(n, 0.0);
+    f_int_.assign(n, 0.0);
+    f_ext_.assign(n, 0.0);
+    damping_.assign(n, 0.0);
+    fixed_.assign(n, 0);
+    if (mesh_.head_nodes.empty() || mesh_.toe_nodes.empty())
+        throw std::invalid_argument("pile mesh lacks head or toe nodes");
+    // compute_internal_force gathers each element into a fixed 32-value buffer.
+    for (const auto& b : mesh_.blocks)
+        if (b.nodes_per_element * mesh_.dofs_per_node() > 32)
+            throw std::invalid_argument("element with more than 32 DOFs");
+    for (int node : mesh_.head_nodes) {
+        head_dofs_.push_back(mesh_.axial_dof(node));
+        head_mass_ += ops_.lumped_mass[mesh_.axial_dof(node)];
+    }
+    double toe_mass = 0.0;
+    for (int node : mesh_.toe_nodes) toe_mass += ops_.lumped_mass[mesh_.axial_dof(node)];
+    for (int node : mesh_.toe_nodes) {
+        const int d = mesh_.axial_dof(node);
+        if (toe_.condition == ToeCondition::Fixed) fixed_[d] = 1;
+        // Sharing the dashpot by nodal mass is sharing it by tributary area of the annulus.
+        if (toe_.condition == ToeCondition::Dashpot)
+            damping_[d] = toe_.impedance * ops_.lumped_mass[d] / toe_mass;
+    }
+}
+
+void ExplicitPile::compute_internal_force() {
+    std::fill(f_int_.begin(), f_int_.end(), 0.0);
+    const int ndn = mesh_.dofs_per_node();
+    for (const auto& block : mesh_.blocks) {
+        const int nen = block.nodes_per_element;
+        const int nde = nen * ndn;
+        const int ne = block.num_elements();
+        double ue[32], fe[32];
+        for (int e = 0; e < ne; ++e) {
+            const int* conn = &block.connectivity[static_cast<std::size_t>(e) * nen];
+            for (int a = 0; a < nen; ++a)
+                for (int d = 0; d < ndn; ++d) ue[a * ndn + d] = u_[conn[a] * ndn + d];
+            const double* K = &block.stiffness[static_cast<std::size_t>(e) * nde * nde];
+            for (int i = 0; i < nde; ++i) {
+                double s = 0.0;
+                for (int j = 0; j < nde; ++j) s += K[i * nde + j] * ue[j];
+                fe[i] = s;
+            }
+            for (int a = 0; a < nen; ++a)
+                for (int d = 0; d < ndn; ++d) f_int_[conn[a] * ndn + d] += fe[a * ndn + d];
+        }
+    }
+}
+
+void ExplicitPile::clear_external_force() { std::fill(f_ext_.begin(), f_ext_.end(), 0.0); }
+
+void ExplicitPile::add_head_force(double force_up) {
+    for (int d : head_dofs_) f_ext_[d] += force_up * ops_.lumped_mass[d] / head_mass_;
+}
+
+void ExplicitPile::advance_velocity(double dt) {
+    const int n = mesh_.num_dofs();
+    const auto& m = ops_.lumped_mass;
+    toe_reaction_ = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double f = f_ext_[i] - f_int_[i];
+        if (fixed_[i]) {
+            toe_reaction_ -= f;  // the support holds the node still: reaction balances f
+            v_[i] = 0.0;
+            continue;
+        }
+        // Dashpot taken at mid-step: unconditionally stable for any impedance.
+        const double c = damping_[i];
+        const double v_old = v_[i];
+        v_[i] = ((m[i] / dt - 0.5 * c) * v_old + f) / (m[i] / dt + 0.5 * c);
+        if (c > 0.0) toe_reaction_ -= 0.5 * c * (v_old + v_[i]);
+    }
+    // Rigid head plate: the head DOFs share the momentum of the plate.
+    double p = 0.0;
+    for (int d : head_dofs_) p += m[d] * v_[d];
+    for (int d : head_dofs_) v_[d] = p / head_mass_;
+}
+
+void ExplicitPile::add_head_velocity(double dv_up) {
+    for (int d : head_dofs_) v_[d] += dv_up;
+}
+
+void ExplicitPile::advance_displacement(double dt) {
+    const int n = mesh_.num_dofs();
+    for (int i = 0; i < n; ++i) u_[i] += dt * v_[i];
+}
+
+double ExplicitPile::toe_velocity() const {
+    double p = 0.0, m = 0.0;
+    for (int node : mesh_.toe_nodes) {
+        const int d = mesh_.axial_dof(node);
+        p += ops_.lumped_mass[d] * v_[d];
+        m += ops_.lumped_mass[d];
+    }
+    return p / m;
+}
+
+double ExplicitPile::toe_displacement() const {
+    double s = 0.0, m = 0.0;
+    for (int node : mesh_.toe_nodes) {
+        const int d = mesh_.axial_dof(node);
+        s += ops_.lumped_mass[d] * u_[d];
+        m += ops_.lumped_mass[d];
+    }
+    return s / m;
+}
+
+void ExplicitPile::axial_stress(std::vector<double>& out) const {
+    out.resize(mesh_.num_elements());
+    const int ndn = mesh_.dofs_per_node();
+    std::size_t k = 0;
+    for (const auto& block : mesh_.blocks) {
+        const int nen = block.nodes_per_element;
+        const int nde = nen * ndn;
+        const int ne = block.num_elements();
+        for (int e = 0; e < ne; ++e, ++k) {
+            const int* conn = &block.connectivity[static_cast<std::size_t>(e) * nen];
+            const double* S = &block.axial_stress[static_cast<std::size_t>(e) * nde];
+            double s = 0.0;
+            for (int a = 0; a < nen; ++a)
+                for (int d = 0; d < ndn; ++d) s += S[a * ndn + d] * u_[conn[a] * ndn + d];
+            out[k] = s;
+        }
+    }
+}
+
+double ExplicitPile::strain_energy() const {
+    double w = 0.0;
+    for (std::size_t i = 0; i < u_.size(); ++i) w += u_[i] * f_int_[i];
+    return 0.5 * w;
+}
+
+double ExplicitPile::kinetic_energy(const std::vector<double>& v) const {
+    double w = 0.0;
+    for (std::size_t i = 0; i < v.size(); ++i) w += ops_.lumped_mass[i] * v[i] * v[i];
+    return 0.5 * w;
+}
+
+double ExplicitPile::dashpot_power(const std::vector<double>& v) const {
+    double w = 0.0;
+    for (std::size_t i = 0; i < v.size(); ++i) w += damping_[i] * v[i] * v[i];
+    return w;
+}
+
+}  // namespace pilempm::fem

@@ -1,0 +1,76 @@
+#pragma once
+// Explicit central-difference dynamics of the FE pile (lumped mass, linear elastic).
+// The head section moves as a rigid plate (the helmet enforces it), so the hammer sees
+// one axial DOF; the toe is free, fixed, or on a dashpot.
+#include <algorithm>
+#include <vector>
+
+#include "fem/mesh/pile_mesh.hpp"
+#include "fem/elements/pile_operators.hpp"
+
+namespace pilempm::fem {
+
+enum class ToeCondition { Free, Fixed, Dashpot };
+
+struct ToeSupport {
+    ToeCondition condition = ToeCondition::Free;
+    double impedance = 0.0;  // N s/m, of the whole toe, for the dashpot
+};
+
+class ExplicitPile {
+public:
+    ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSupport toe);
+
+    const PileMesh& mesh() const { return mesh_; }
+    const LinearElasticSteel& steel() const { return steel_; }
+    const PileOperators& operators() const { return ops_; }
+    double stable_time_step() const { return ops_.stable_time_step; }
+
+    // One step: f_int = K u_n, then v_{n+1/2} from the forces at t_n, then (after the
+    // caller's contact corrections to v) u_{n+1} = u_n + dt v_{n+1/2}.
+    void compute_internal_force();
+    void advance_velocity(double dt);
+    void advance_displacement(double dt);
+    void clear_external_force();
+
+    // The rigid head plate, axial direction, up positive.
+    double head_mass() const { return head_mass_; }
+    double head_velocity() const { return v_[mesh_.axial_dof(mesh_.head_nodes.front())]; }
+    double head_displacement() const { return u_[mesh_.axial_dof(mesh_.head_nodes.front())]; }
+    void add_head_force(double force_up);
+    void add_head_velocity(double dv_up);
+    // Generic nodal loads and dashpots for whatever acts on the pile (soil springs).
+    void add_nodal_force(int dof, double force) { f_ext_[dof] += force; }
+    void add_nodal_damping(int dof, double c) { damping_[dof] += c; }
+
+    // Toe reaction (force of the support on the pile, up positive) of the last step.
+    double toe_reaction() const { return toe_reaction_; }
+    double toe_velocity() const;      // mass-weighted mean axial velocity, up positive
+    double toe_displacement() const;  // mean axial displacement, up positive
+
+    const std::vector<double>& displacement() const { return u_; }
+    const std::vector<double>& velocity() const { return v_; }  // at t_{n+1/2}
+    const std::vector<double>& internal_force() const { return f_int_; }
+
+    // Axial stress at each element's centroid (Pa, tension positive), all blocks in order.
+    void axial_stress(std::vector<double>& out) const;
+    double strain_energy() const;  // 0.5 u.K u, with f_int of the current u
+    double kinetic_energy(const std::vector<double>& v) const;
+    double dashpot_power(const std::vector<double>& v) const;  // W, rate of dissipation
+    // Brings the pile to rest: zeroes every velocity (kinetic damping between blows).
+    void stop() { std::fill(v_.begin(), v_.end(), 0.0); }
+
+private:
+    PileMesh mesh_;
+    LinearElasticSteel steel_;
+    PileOperators ops_;
+    ToeSupport toe_;
+    std::vector<double> u_, v_, f_int_, f_ext_;
+    std::vector<double> damping_;       // N s/m per DOF (toe dashpot)
+    std::vector<char> fixed_;           // per DOF
+    std::vector<int> head_dofs_;
+    double head_mass_ = 0.0;
+    double toe_reaction_ = 0.0;
+};
+
+}  // namespace pilempm::fem

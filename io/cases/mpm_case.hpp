@@ -1,0 +1,84 @@
+#pragma once
+// An MPM soil case (analysis: mpm) as read from YAML, validated, SI units.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "io/cases/material_input.hpp"
+#include "io/cases/pile_hammer_input.hpp"
+#include "mpm/setup/model_setup.hpp"
+#include "mpm/grid/shape_functions.hpp"
+
+namespace pilempm::io {
+
+using MpmMaterialInput = MaterialInput;
+
+struct MpmBox {
+    std::array<double, 3> min{}, max{};
+};
+
+struct MpmRegionInput {
+    int material = 0;
+    enum Kind { Box, Cylinder, Layer } kind = Box;
+    MpmBox box;                    // Box; Layer uses min[vertical]..max[vertical]
+    std::array<double, 3> centre{};  // Cylinder: base centre; axis vertical
+    double radius = 0.0, height = 0.0;
+};
+
+struct MpmBoundaryInput {
+    int axis = 0, side = 0;
+    mpm::BoundaryKind kind = mpm::BoundaryKind::Fixed;
+    double friction = 0.0;  // Coulomb coefficient of a frictional wall
+};
+
+struct MpmPressureInput {  // on the points in a box: force = -pressure n x face area
+    MpmBox box;
+    int normal_axis = 1;
+    double normal_sign = 1.0;
+    double pressure = 0.0;          // Pa, compression positive
+    double duration = 0.0;          // s; 0: held for good (a step), else a pulse of that length
+};
+
+struct MpmVelocityInput {  // grid nodes in a box move at a prescribed velocity
+    MpmBox box;
+    std::array<double, 3> velocity{};
+    std::array<bool, 3> components{};
+};
+
+struct MpmStageInput {
+    std::string name;
+    bool quasi_static = false;      // local damping until equilibrium
+    double duration = 0.0;          // s (dynamic)
+    long max_steps = 100000;        // quasi-static
+    double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)
+    double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
+};
+
+struct MpmCase : CaseFile {
+    int dimension = 2;
+    bool axisymmetric = false;
+    std::array<double, 3> origin{}, size{};
+    std::array<int, 3> cells{};
+    mpm::ShapeKind shape = mpm::ShapeKind::GIMP;
+    int per_cell = 2;
+    double flip = 0.98, cfl = 0.5;
+    bool apic = false;              // velocity_transfer: apic (else the FLIP/PIC blend)
+    std::vector<MpmMaterialInput> materials;
+    std::vector<MpmRegionInput> regions;
+    std::vector<MpmBoundaryInput> boundaries;
+    std::vector<MpmPressureInput> pressures;
+    std::vector<MpmVelocityInput> velocities;
+    bool k0_initial_stress = false;
+    double surface = 0.0;           // elevation of the ground surface for K0, m
+    std::vector<MpmStageInput> stages;
+    double snapshot_interval = 0.0; // s of simulated time (0: one snapshot per stage end)
+    long checkpoint_every = 0;      // steps (0: only at stage ends)
+    bool plots = true;
+    std::vector<std::array<double, 3>> probes;  // points whose nearest material point is recorded
+    std::vector<std::string> verification_checks;
+    std::map<std::string, double> verification;  // parameters of the checks
+};
+
+MpmCase read_mpm_case(const std::string& file);
+
+}  // namespace pilempm::io

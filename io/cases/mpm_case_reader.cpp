@@ -1,0 +1,211 @@
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "io/cases/mpm_case.hpp"
+#include "io/yaml/yaml_reader.hpp"
+
+namespace pilempm::io {
+namespace {
+
+const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
+                                          "absorbed_energy", "footing_collapse", "granular_runout",
+                                          "stress_noise", "k0_ratio"};
+
+std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
+    const auto v = m.numbers(key, {"a coordinate in m", [](double) { return true; }});
+    if (static_cast<int>(v.size()) != dim)
+        m.fail(key, std::to_string(dim) + " coordinates", std::to_string(v.size()) + " numbers");
+    std::array<double, 3> out{};
+    for (int d = 0; d < dim; ++d) out[d] = v[d];
+    return out;
+}
+
+MpmBox box(MapReader m, int dim) {
+    MpmBox b;
+    b.min = point(m, "min", dim);
+    b.max = point(m, "max", dim);
+    for (int d = 0; d < dim; ++d)
+        if (!(b.max[d] > b.min[d])) m.fail("max", "a corner above min in every coordinate", "one that is not");
+    m.finish();
+    return b;
+}
+
+int material_index(const MpmCase& c, MapReader& m, const std::string& key) {
+    const std::string name = m.text_or(key, "");
+    for (std::size_t i = 0; i < c.materials.size(); ++i)
+        if (c.materials[i].name == name) return static_cast<int>(i);
+    std::string names;
+    for (const auto& mat : c.materials) names += (names.empty() ? "" : ", ") + mat.name;
+    m.fail(key, "the name of a material (" + names + ")", "'" + name + "'");
+}
+
+std::pair<int, int> plane(MapReader& m, const std::string& key, int dim) {
+    std::vector<std::string> names = {"x_min", "x_max", "y_min", "y_max"};
+    if (dim == 3) names.insert(names.end(), {"z_min", "z_max"});
+    const std::string p = m.choice(key, names);
+    return {p[0] - 'x', p.substr(2) == "max" ? 1 : 0};
+}
+
+void read_grid(MapReader m, MpmCase& c) {
+    const int D = c.dimension;
+    c.origin = point(m, "origin", D);
+    c.size = point(m, "size", D);
+    const auto cells = m.numbers("cells", positive("number of cells"));
+    if (static_cast<int>(cells.size()) != D) m.fail("cells", std::to_string(D) + " counts", std::to_string(cells.size()));
+    for (int d = 0; d < D; ++d) {
+        c.cells[d] = static_cast<int>(std::lround(cells[d]));
+        if (!(c.size[d] > 0.0)) m.fail("size", "positive lengths", std::to_string(c.size[d]));
+    }
+    if (c.axisymmetric && c.origin[0] < 0.0) m.fail("origin", "r >= 0 in axisymmetry", std::to_string(c.origin[0]));
+    m.finish();
+}
+
+MpmRegionInput read_region(MapReader m, const MpmCase& c) {
+    MpmRegionInput r;
+    r.material = material_index(c, m, "material");
+    const int D = c.dimension;
+    if (auto b = m.optional_map("box")) {
+        r.kind = MpmRegionInput::Box;
+        r.box = box(std::move(*b), D);
+    } else if (auto cy = m.optional_map("cylinder")) {
+        if (D != 3) m.fail("cylinder", "a box or layer in 2D (a cylinder needs 3D)", "a cylinder");
+        r.kind = MpmRegionInput::Cylinder;
+        r.centre = point(*cy, "base_centre", 3);
+        r.radius = cy->number("radius", positive("radius in m"));
+        r.height = cy->number("height", positive("height in m"));
+        cy->finish();
+    } else if (auto l = m.optional_map("layer")) {
+        r.kind = MpmRegionInput::Layer;
+        r.box.min[D - 1] = l->number("bottom", {"an elevation in m", [](double) { return true; }});
+        r.box.max[D - 1] = l->number("top", {"an elevation above the bottom", [b = r.box.min[D - 1]](double t) { return t > b; }});
+        for (int d = 0; d < D - 1; ++d) {
+            r.box.min[d] = -1e300;
+            r.box.max[d] = 1e300;
+        }
+        l->finish();
+    } else {
+        m.fail("box", "one of box, cylinder or layer", "none");
+    }
+    m.finish();
+    return r;
+}
+
+MpmStageInput read_stage(MapReader m) {
+    MpmStageInput s;
+    s.name = m.text_or("name", "stage");
+    s.quasi_static = m.choice("type", {"quasi_static", "dynamic"}) == "quasi_static";
+    if (s.quasi_static) {
+        s.max_steps = m.integer_or("max_steps", 100000, 1);
+        s.tolerance = m.number_or("tolerance", 1e-4, positive("unbalanced force ratio"));
+        s.local_damping = m.number_or("local_damping", 0.7, in_open_range(0.0, 1.0, "a damping coefficient"));
+    } else {
+        s.duration = m.number("duration", positive("duration in s"));
+        // A displacement-controlled push can be made quasi-static with local damping.
+        s.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
+                                                             [](double x) { return x >= 0.0 && x < 1.0; }});
+    }
+    m.finish();
+    return s;
+}
+
+}  // namespace
+
+MpmCase read_mpm_case(const std::string& file) {
+    MapReader root = load_yaml_file(file);
+    MpmCase c;
+    read_case_header(root, c, file, "mpm");
+    c.dimension = root.integer_or("dimension", 2, 2);
+    if (c.dimension > 3) root.fail("dimension", "2 or 3", std::to_string(c.dimension));
+    if (c.dimension == 2)
+        c.axisymmetric = root.choice_or("geometry", "plane_strain", {"plane_strain", "axisymmetric"}) == "axisymmetric";
+    read_grid(root.map("grid"), c);
+    const std::string shape = root.choice_or("shape_function", "gimp", {"linear", "gimp", "cpdi"});
+    c.shape = shape == "linear" ? mpm::ShapeKind::Linear : shape == "gimp" ? mpm::ShapeKind::GIMP : mpm::ShapeKind::CPDI;
+    c.per_cell = root.integer_or("particles_per_cell", 2, 1);
+    c.apic = root.choice_or("velocity_transfer", "flip_pic", {"flip_pic", "apic"}) == "apic";
+    // C = sum v_i grad N_i jumps across cell faces with linear hats: APIC then blows up.
+    if (c.apic && c.shape == mpm::ShapeKind::Linear)
+        root.fail("velocity_transfer", "apic with shape_function gimp or cpdi (not linear)", "apic");
+    if (c.apic && root.has("flip"))
+        root.fail("flip", "no flip with velocity_transfer: apic (APIC has no FLIP/PIC blend)", "a flip fraction");
+    c.flip = root.number_or("flip", 0.98, {"a FLIP fraction from 0 to 1", [](double x) { return x >= 0 && x <= 1; }});
+    c.cfl = root.number_or("cfl", 0.5, in_half_open_range(0.0, 1.0, "a Courant number"));
+    for (auto m : root.maps("materials")) c.materials.push_back(read_material(std::move(m), true));
+    for (auto m : root.maps("regions")) c.regions.push_back(read_region(std::move(m), c));
+    if (root.has("boundaries"))
+        for (auto m : root.maps("boundaries")) {
+            MpmBoundaryInput b;
+            std::tie(b.axis, b.side) = plane(m, "plane", c.dimension);
+            const std::string t = m.choice("type", {"fixed", "roller", "absorbing", "frictional"});
+            b.kind = t == "fixed"        ? mpm::BoundaryKind::Fixed
+                     : t == "roller"     ? mpm::BoundaryKind::Roller
+                     : t == "absorbing"  ? mpm::BoundaryKind::Absorbing
+                                         : mpm::BoundaryKind::Frictional;
+            if (b.kind == mpm::BoundaryKind::Frictional)
+                b.friction = m.number("friction", non_negative("Coulomb friction coefficient"));
+            m.finish();
+            c.boundaries.push_back(b);
+        }
+    if (root.has("pressures"))
+        for (auto m : root.maps("pressures")) {
+            MpmPressureInput p;
+            p.box = box(m.map("box"), c.dimension);
+            const auto [axis, side] = plane(m, "face", c.dimension);
+            p.normal_axis = axis;
+            p.normal_sign = side == 1 ? 1.0 : -1.0;  // outward normal of the loaded face
+            p.pressure = m.number("pressure", {"a pressure in Pa", [](double) { return true; }});
+            p.duration = m.number_or("duration", 0.0, non_negative("pulse duration in s"));
+            m.finish();
+            c.pressures.push_back(p);
+        }
+    if (root.has("velocities"))
+        for (auto m : root.maps("velocities")) {
+            MpmVelocityInput v;
+            v.box = box(m.map("box"), c.dimension);
+            const auto vel = m.numbers("velocity", {"a velocity in m/s", [](double) { return true; }});
+            if (static_cast<int>(vel.size()) != c.dimension) m.fail("velocity", std::to_string(c.dimension) + " components", std::to_string(vel.size()));
+            const auto comps = m.words("components", {"x", "y", "z"});
+            for (int d = 0; d < c.dimension; ++d) v.velocity[d] = vel[d];
+            for (const auto& s : comps) v.components[s[0] - 'x'] = true;
+            m.finish();
+            c.velocities.push_back(v);
+        }
+    if (auto init = root.optional_map("initial_stress")) {
+        c.k0_initial_stress = init->choice("type", {"k0", "none"}) == "k0";
+        if (c.k0_initial_stress) c.surface = init->number("surface", {"an elevation in m", [](double) { return true; }});
+        init->finish();
+    }
+    for (auto m : root.maps("stages")) c.stages.push_back(read_stage(std::move(m)));
+    if (auto out = root.optional_map("output")) {
+        c.snapshot_interval = out->number_or("snapshot_interval", 0.0, non_negative("interval in s"));
+        c.checkpoint_every = out->integer_or("checkpoint_every", 0, 0);
+        c.plots = out->boolean_or("plots", true);
+        if (out->has("probes")) {
+            const YAML::Node list = out->raw("probes");
+            if (!list.IsSequence()) out->fail("probes", "a list of points", describe(list));
+            for (std::size_t i = 0; i < list.size(); ++i) {
+                if (!list[i].IsSequence() || static_cast<int>(list[i].size()) != c.dimension)
+                    throw CaseError(file, list[i].Mark().line + 1, "output.probes[" + std::to_string(i) + "]",
+                                    std::to_string(c.dimension) + " coordinates", describe(list[i]));
+                std::array<double, 3> p{};
+                for (int d = 0; d < c.dimension; ++d) p[d] = list[i][d].as<double>();
+                c.probes.push_back(p);
+            }
+        }
+        out->finish();
+    }
+    if (auto v = root.optional_map("verification")) {
+        c.verification_checks = v->words("checks", kChecks);
+        for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
+                                "footing_width", "reference", "initial_width", "height"})
+            if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
+        if (v->has("front_thickness"))
+            c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
+        v->finish();
+    }
+    root.finish();
+    return c;
+}
+
+}  // namespace pilempm::io

@@ -1,0 +1,64 @@
+#pragma once
+// Restartable checkpoint of an MPM run (HDF5): the material points bit for bit plus the
+// run's time, step, named scalars and a fingerprint of the case it belongs to. HDF5 stays
+// out of this header.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mpm/points/particles.hpp"
+
+namespace pilempm::io {
+
+struct CheckpointInfo {
+    double time = 0.0;
+    long step = 0;
+    std::vector<std::pair<std::string, double>> scalars;  // in the order written
+    std::string case_fingerprint;
+    int dimension = 0;
+};
+
+// File layout (all datasets 1-D, row-major per point, little-endian):
+//  /particles/x, v, external_force         D per point, double
+//  /particles/mass, volume, volume0        1 per point, double
+//  /particles/C, F, domain0                D*D per point, double
+//  /particles/stress, strain               6 per point, double
+//  /particles/material                     1 per point, int32
+//  /particles/state                        state_stride per point, double; attribute
+//                                          "state_stride" (int)
+//  /scalars                                double dataset, attribute "names" (string array)
+//  root attributes  format = "pilempm-mpm-checkpoint", format_version (int), dimension (int),
+//                   num_points (int64), time (double), step (int64), fingerprint (string)
+// Particles::dstrain is per-step scratch and is not stored (read_checkpoint zeroes it).
+//
+// The file is written as `file` + ".tmp" and renamed over `file` only once complete and
+// synced, so a crash mid-write leaves the previous checkpoint intact. Throws
+// std::runtime_error naming the file on any failure (the .tmp is removed); input whose
+// arrays disagree with p.size() is refused before any file is touched.
+template <int D>
+void write_checkpoint(const std::filesystem::path& file, const mpm::Particles<D>& p, double time,
+                      long step, const std::vector<std::pair<std::string, double>>& scalars,
+                      const std::string& case_fingerprint);
+
+// Reads a checkpoint written by write_checkpoint<D> into p (replacing all its contents;
+// dstrain becomes zeros). Throws std::runtime_error naming the file and the problem when the
+// file cannot be opened or is not such a checkpoint, when it was written for another
+// dimension, or when an array has the wrong rank, type or size; p is then left unchanged.
+template <int D>
+CheckpointInfo read_checkpoint(const std::filesystem::path& file, mpm::Particles<D>& p);
+
+extern template void write_checkpoint<2>(const std::filesystem::path&, const mpm::Particles<2>&,
+                                         double, long,
+                                         const std::vector<std::pair<std::string, double>>&,
+                                         const std::string&);
+extern template void write_checkpoint<3>(const std::filesystem::path&, const mpm::Particles<3>&,
+                                         double, long,
+                                         const std::vector<std::pair<std::string, double>>&,
+                                         const std::string&);
+extern template CheckpointInfo read_checkpoint<2>(const std::filesystem::path&,
+                                                  mpm::Particles<2>&);
+extern template CheckpointInfo read_checkpoint<3>(const std::filesystem::path&,
+                                                  mpm::Particles<3>&);
+
+}  // namespace pilempm::io

@@ -1,0 +1,290 @@
+#include "mpm/grid/shape_functions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pilempm::mpm {
+
+template <int D>
+int Stencil<D>::slot(int n) {
+    for (int k = 0; k < count; ++k)
+        if (e[k].node == n) return k;
+    return append(n);
+}
+
+template <int D>
+int Stencil<D>::append(int n) {
+    if (count >= kMax) throw std::logic_error("shape function stencil overflow");
+    e[count].node = n;
+    e[count].N = 0.0;
+    hoop[count] = 0.0;
+    for (int d = 0; d < D; ++d) e[count].dN[d] = 0.0;
+    return count++;
+}
+
+namespace {
+
+// 1D hat of node at xi with spacing h, and its slope.
+inline double hat(double s, double xi, double h) { return std::max(0.0, 1.0 - std::abs(s - xi) / h); }
+inline double hat_slope(double s, double xi, double h) {
+    const double d = s - xi;
+    if (std::abs(d) >= h) return 0.0;
+    return d > 0.0 ? -1.0 / h : 1.0 / h;
+}
+
+struct Hat1D {
+    double value;  // int N w ds
+    double slope;  // int N' w ds
+    double plain;  // int N ds
+};
+
+// Exact integrals of the hat over [a, b] with weight w(s) = s (weighted) or 1: 2-point
+// Gauss on each piece between the hat's kinks (integrands are at most quadratic).
+Hat1D integrate_hat(double xi, double h, double a, double b, bool weighted) {
+    const double kinks[3] = {xi - h, xi, xi + h};
+    double cuts[5] = {a, 0, 0, 0, b};
+    int n = 1;
+    for (double k : kinks)
+        if (k > a && k < b) cuts[n++] = k;
+    cuts[n] = b;
+    Hat1D r{0.0, 0.0, 0.0};
+    const double g = 0.5 / std::sqrt(3.0);
+    for (int p = 0; p < n; ++p) {
+        const double lo = cuts[p], hi = cuts[p + 1], mid = 0.5 * (lo + hi), half = hi - lo;
+        for (double t : {-g, g}) {
+            const double s = mid + t * half, w = weighted ? s : 1.0;
+            // The slope is taken at the piece's midpoint: constant on each piece.
+            r.value += 0.5 * half * hat(s, xi, h) * w;
+            r.slope += 0.5 * half * hat_slope(mid, xi, h) * w;
+            r.plain += 0.5 * half * hat(s, xi, h);
+        }
+    }
+    return r;
+}
+
+// uGIMP along one axis for a half-length l <= h/2 without a radial weight: the nodes
+// first.. that the domain [x - l, x + l] reaches (2 or 3; 4 only on a knife edge), with
+// the closed-form weight and slope of Bardenhagen & Kober (2004), the values
+// integrate_hat gives, written in cell units so that no division is left in the loop.
+inline int ugimp_axis(double x, double l, double origin, double h, int cells, int& first, double* S, double* G) {
+    const double inv_h = 1.0 / h, u = (x - origin) * inv_h, lam = l * inv_h;
+    const double inv_lam = 1.0 / lam;
+    const int lo = std::max(0, static_cast<int>(std::floor(u - lam)));
+    const int hi = std::min(cells, static_cast<int>(std::ceil(u + lam)));
+    first = lo;
+    for (int i = 0; i <= hi - lo; ++i) {
+        const double xi = u - (lo + i), a = std::abs(xi), sgn = xi >= 0.0 ? 1.0 : -1.0;
+        if (a < lam) {
+            S[i] = 1.0 - 0.5 * (xi * xi + lam * lam) * inv_lam;
+            G[i] = -xi * inv_lam * inv_h;
+        } else if (a <= 1.0 - lam) {
+            S[i] = 1.0 - a;
+            G[i] = -sgn * inv_h;
+        } else if (a < 1.0 + lam) {
+            const double d = 1.0 + lam - a;
+            S[i] = 0.25 * d * d * inv_lam;
+            G[i] = -0.5 * sgn * d * inv_lam * inv_h;
+        } else {
+            S[i] = G[i] = 0.0;
+        }
+    }
+    return hi - lo + 1;
+}
+
+template <int D>
+void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s) {
+    std::array<int, D> base{};
+    std::array<double, D> f{};
+    for (int d = 0; d < D; ++d) {
+        base[d] = g.cell_of(d, x[d]);
+        f[d] = (x[d] - g.coordinate(d, base[d])) / g.spacing[d];
+    }
+    for (int corner = 0; corner < (1 << D); ++corner) {
+        std::array<int, D> c{};
+        double w[D], dw[D];
+        for (int d = 0; d < D; ++d) {
+            const int bit = (corner >> d) & 1;
+            c[d] = base[d] + bit;
+            w[d] = bit ? f[d] : 1.0 - f[d];
+            dw[d] = (bit ? 1.0 : -1.0) / g.spacing[d];
+        }
+        const int k = s.append(g.node(c));
+        double N = 1.0;
+        for (int d = 0; d < D; ++d) N *= w[d];
+        s.e[k].N += N;
+        for (int d = 0; d < D; ++d) {
+            double grad = dw[d];
+            for (int e = 0; e < D; ++e)
+                if (e != d) grad *= w[e];
+            s.e[k].dN[d] += grad;
+        }
+        if (axisymmetric) s.hoop[k] += N / x[0];
+    }
+}
+
+template <int D>
+void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* half_domain, Stencil<D>& s) {
+    // Per axis: weights of the (up to 3) nodes the particle domain overlaps.
+    int first[D], n_axis[D];
+    double S[D][4], G[D][4], H[4] = {0, 0, 0, 0};
+    for (int d = 0; d < D; ++d) {
+        const double l = half_domain[d * D + d], h = g.spacing[d];
+        const bool weighted = axisymmetric && d == 0;
+        if (!weighted && l <= 0.5 * h) {
+            n_axis[d] = ugimp_axis(x[d], l, g.origin[d], h, g.cells[d], first[d], S[d], G[d]);
+            continue;
+        }
+        const double a = x[d] - l, b = x[d] + l;
+        const double W = weighted ? 2.0 * l * x[d] : 2.0 * l;  // int w ds over the domain
+        const int lo = std::max(0, static_cast<int>(std::floor((a - g.origin[d]) / h)));
+        const int hi = std::min(g.cells[d], static_cast<int>(std::ceil((b - g.origin[d]) / h)));
+        first[d] = lo;
+        n_axis[d] = hi - lo + 1;
+        if (n_axis[d] > 4) throw std::logic_error("GIMP domain larger than a cell");
+        for (int i = 0; i < n_axis[d]; ++i) {
+            const Hat1D r = integrate_hat(g.coordinate(d, lo + i), h, a, b, weighted);
+            S[d][i] = r.value / W;
+            G[d][i] = r.slope / W;
+            if (weighted) H[i] = r.plain / W;
+        }
+    }
+    // Tensor product of the per-axis weights, written straight into the stencil: the
+    // nodes are distinct, so nothing accumulates. Entries with no weight and no gradient
+    // are left out. x runs fastest, as the nodes are numbered.
+    int stride[D], base = 0;
+    for (int d = 0; d < D; ++d) {
+        stride[d] = d == 0 ? 1 : stride[d - 1] * (g.cells[d - 1] + 1);
+        base += first[d] * stride[d];
+    }
+    int total = 1;
+    for (int d = 0; d < D; ++d) total *= n_axis[d];
+    for (int m = 0; m < total; ++m) {
+        int idx[D], rem = m, node = base;
+        for (int d = 0; d < D; ++d) {
+            idx[d] = rem % n_axis[d];
+            rem /= n_axis[d];
+            node += idx[d] * stride[d];
+        }
+        double N = 1.0, grad[D];
+        for (int d = 0; d < D; ++d) N *= S[d][idx[d]];
+        bool any = N != 0.0;
+        for (int d = 0; d < D; ++d) {
+            grad[d] = G[d][idx[d]];
+            for (int e = 0; e < D; ++e)
+                if (e != d) grad[d] *= S[e][idx[e]];
+            any = any || grad[d] != 0.0;
+        }
+        if (!any) continue;
+        const int k = s.count++;
+        s.e[k].node = node;
+        s.e[k].N = N;
+        for (int d = 0; d < D; ++d) s.e[k].dN[d] = grad[d];
+        double hoop = 0.0;
+        if (axisymmetric) {
+            hoop = H[idx[0]];
+            for (int e = 1; e < D; ++e) hoop *= S[e][idx[e]];
+        }
+        s.hoop[k] = hoop;
+    }
+}
+
+template <int D>
+void cpdi(const Grid<D>& g, bool axisymmetric, const double* x, const double* r, Stencil<D>& s) {
+    constexpr int nc = 1 << D;
+    // Corner stencils of the linear hats.
+    Stencil<D> corner[nc];
+    double xc[nc][D];
+    for (int c = 0; c < nc; ++c) {
+        for (int d = 0; d < D; ++d) {
+            xc[c][d] = x[d];
+            for (int k = 0; k < D; ++k) xc[c][d] += (((c >> k) & 1) ? 1.0 : -1.0) * r[k * D + d];
+        }
+        corner[c].clear();
+        linear<D>(g, false, xc[c], corner[c]);
+    }
+    // Affine map x(xi) = x + sum_k xi_k r_k on [-1, 1]^D; J[d][k] = r_k[d].
+    double J[D][D], Jinv[D][D];
+    for (int d = 0; d < D; ++d)
+        for (int k = 0; k < D; ++k) J[d][k] = r[k * D + d];
+    double det;
+    if constexpr (D == 2) {
+        det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        Jinv[0][0] = J[1][1] / det;
+        Jinv[0][1] = -J[0][1] / det;
+        Jinv[1][0] = -J[1][0] / det;
+        Jinv[1][1] = J[0][0] / det;
+    } else {
+        det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+              J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+                Jinv[i][j] = (J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1]) / det;
+            }
+    }
+    if (!(det > 0.0)) throw std::runtime_error("CPDI particle domain inverted");
+    // 2^D Gauss points: exact for the multilinear interpolant times a linear weight.
+    const double gp = 1.0 / std::sqrt(3.0);
+    double W = 0.0;
+    for (int q = 0; q < nc; ++q) {
+        double xi[D];
+        for (int k = 0; k < D; ++k) xi[k] = ((q >> k) & 1) ? gp : -gp;
+        double xq0 = x[0];
+        for (int k = 0; k < D; ++k) xq0 += xi[k] * r[k * D + 0];
+        const double w = axisymmetric ? xq0 : 1.0;  // Gauss weights are 1; |J| cancels in 1/W
+        W += w;
+        for (int c = 0; c < nc; ++c) {
+            // Multilinear corner function L_c(xi) and its parametric gradient.
+            double L = 1.0, dL[D];
+            for (int k = 0; k < D; ++k) {
+                const double sgn = ((c >> k) & 1) ? 1.0 : -1.0;
+                L *= 0.5 * (1.0 + sgn * xi[k]);
+            }
+            for (int k = 0; k < D; ++k) {
+                double v = 0.5 * (((c >> k) & 1) ? 1.0 : -1.0);
+                for (int m = 0; m < D; ++m)
+                    if (m != k) v *= 0.5 * (1.0 + (((c >> m) & 1) ? 1.0 : -1.0) * xi[m]);
+                dL[k] = v;
+            }
+            double gradL[D];  // d L / d x = J^-T dL/dxi
+            for (int d = 0; d < D; ++d) {
+                gradL[d] = 0.0;
+                for (int k = 0; k < D; ++k) gradL[d] += Jinv[k][d] * dL[k];
+            }
+            for (int e = 0; e < corner[c].count; ++e) {
+                const int k = s.slot(corner[c].e[e].node);
+                const double Nc = corner[c].e[e].N;
+                s.e[k].N += L * Nc * w;
+                for (int d = 0; d < D; ++d) s.e[k].dN[d] += gradL[d] * Nc * w;
+                if (axisymmetric) s.hoop[k] += L * Nc;
+            }
+        }
+    }
+    for (int k = 0; k < s.count; ++k) {
+        s.e[k].N /= W;
+        for (int d = 0; d < D; ++d) s.e[k].dN[d] /= W;
+        s.hoop[k] /= W;
+    }
+}
+
+}  // namespace
+
+template <int D>
+void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, const double* x,
+                    const double* half_domain, Stencil<D>& s) {
+    s.clear();
+    for (int d = 0; d < D; ++d) s.x[d] = x[d];
+    switch (kind) {
+        case ShapeKind::Linear: linear<D>(grid, axisymmetric, x, s); break;
+        case ShapeKind::GIMP: gimp<D>(grid, axisymmetric, x, half_domain, s); break;
+        case ShapeKind::CPDI: cpdi<D>(grid, axisymmetric, x, half_domain, s); break;
+    }
+}
+
+template struct Stencil<2>;
+template struct Stencil<3>;
+template void evaluate_shape<2>(const Grid<2>&, ShapeKind, bool, const double*, const double*, Stencil<2>&);
+template void evaluate_shape<3>(const Grid<3>&, ShapeKind, bool, const double*, const double*, Stencil<3>&);
+
+}  // namespace pilempm::mpm

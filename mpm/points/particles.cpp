@@ -1,0 +1,40 @@
+#include "mpm/points/particles.hpp"
+
+namespace pilempm::mpm {
+
+template <int D>
+void Particles<D>::add(const double* position, double point_mass, double point_volume,
+                       const double* lengths, int material_id) {
+    for (int d = 0; d < D; ++d) {
+        x.push_back(position[d]);
+        v.push_back(0.0);
+        external_force.push_back(0.0);
+    }
+    mass.push_back(point_mass);
+    volume.push_back(point_volume);
+    volume0.push_back(point_volume);
+    for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) {
+            F.push_back(i == j ? 1.0 : 0.0);
+            C.push_back(0.0);
+            domain0.push_back(i == j ? lengths[i] : 0.0);
+        }
+    for (int k = 0; k < 6; ++k) {
+        stress.push_back(0.0);
+        strain.push_back(0.0);
+        dstrain.push_back(0.0);
+    }
+    material.push_back(material_id);
+    for (int k = 0; k < state_stride; ++k) state.push_back(0.0);
+}
+
+template <int D>
+void Particles<D>::resize_state(int stride) {
+    state_stride = stride;
+    state.assign(size() * static_cast<std::size_t>(stride), 0.0);
+}
+
+template struct Particles<2>;
+template struct Particles<3>;
+
+}  // namespace pilempm::mpm

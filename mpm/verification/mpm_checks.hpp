@@ -1,0 +1,33 @@
+#pragma once
+// Closed-form checks of MPM runs: stresses of a column under self-weight and of a thick
+// cylinder under internal pressure, the arrival and the absorption of a 1D wave, Prandtl's
+// footing, K0 and the collapse laws. Each compares the run with an independent number.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/table.hpp"
+#include "core/verification_check.hpp"
+#include "mpm/solver/mpm_solver.hpp"
+
+namespace pilempm::mpm {
+
+// What the checks read besides the model: the case's check names and parameters
+// (verification.* keys), gravity and the first material's density.
+struct MpmCheckContext {
+    std::vector<std::string> checks;
+    std::map<std::string, double> parameters;
+    double gravity = 0.0;  // m/s^2, magnitude
+    double density = 0.0;  // kg/m^3
+};
+
+template <int D>
+std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, const MpmModel<D>& m,
+                                                    const std::vector<double>& x0, const Table& history);
+
+// RMS of (sigma_v - rho g z) / (rho g H) over the points: the stress noise of a column
+// under its weight (verification.surface gives the top).
+template <int D>
+double stress_noise(const MpmCheckContext& c, const MpmModel<D>& m, const std::vector<double>& x0);
+
+}  // namespace pilempm::mpm
