@@ -1,5 +1,7 @@
 #include "fem/elements/element_kernels.hpp"
 
+#include "core/conventions.hpp"
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
@@ -84,7 +86,7 @@ void axisym_quad4_operators(const double rz[8], const LinearElasticSteel& steel,
     for (int i = 0; i < 2; ++i) {
         for (int j = 0; j < 2; ++j) {
             strain_matrix(i ? g : -g, j ? g : -g, B, r, detJ, N);
-            const double dV = 2.0 * std::numbers::pi * r * detJ;  // Gauss weights are 1
+            const double dV = full_ring(r) * detJ;  // the whole ring; Gauss weights are 1
             Ke.noalias() += B.transpose() * D * B * dV;
             // Row-sum lumping of the consistent mass: m_a = integral of rho N_a.
             for (int a = 0; a < 4; ++a) mass[a] += steel.density * N[a] * dV;

@@ -36,7 +36,8 @@ struct MpmPressureInput {  // on the points in a box: force = -pressure n x face
     int normal_axis = 1;
     double normal_sign = 1.0;
     double pressure = 0.0;          // Pa, compression positive
-    double duration = 0.0;          // s; 0: held for good (a step), else a pulse of that length
+    double duration = 0.0;          // s; 0: held (a step), else a pulse from each stage's start
+    std::vector<int> stages;        // the stages it acts in (indices); empty: all
 };
 
 struct MpmVelocityInput {  // grid nodes in a box move at a prescribed velocity

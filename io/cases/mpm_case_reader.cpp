@@ -147,6 +147,10 @@ MpmCase read_mpm_case(const std::string& file) {
             m.finish();
             c.boundaries.push_back(b);
         }
+    // Stages first: loads name the stages they act in.
+    for (auto m : root.maps("stages")) c.stages.push_back(read_stage(std::move(m)));
+    std::vector<std::string> stage_names;
+    for (const auto& st : c.stages) stage_names.push_back(st.name);
     if (root.has("pressures"))
         for (auto m : root.maps("pressures")) {
             MpmPressureInput p;
@@ -156,6 +160,10 @@ MpmCase read_mpm_case(const std::string& file) {
             p.normal_sign = side == 1 ? 1.0 : -1.0;  // outward normal of the loaded face
             p.pressure = m.number("pressure", {"a pressure in Pa", [](double) { return true; }});
             p.duration = m.number_or("duration", 0.0, non_negative("pulse duration in s"));
+            if (m.has("stages"))
+                for (const auto& name : m.words("stages", stage_names))
+                    for (std::size_t k = 0; k < c.stages.size(); ++k)
+                        if (c.stages[k].name == name) p.stages.push_back(static_cast<int>(k));
             m.finish();
             c.pressures.push_back(p);
         }
@@ -176,7 +184,6 @@ MpmCase read_mpm_case(const std::string& file) {
         if (c.k0_initial_stress) c.surface = init->number("surface", {"an elevation in m", [](double) { return true; }});
         init->finish();
     }
-    for (auto m : root.maps("stages")) c.stages.push_back(read_stage(std::move(m)));
     if (auto out = root.optional_map("output")) {
         c.snapshot_interval = out->number_or("snapshot_interval", 0.0, non_negative("interval in s"));
         c.checkpoint_every = out->integer_or("checkpoint_every", 0, 0);

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFormat = "pilempm-mpm-checkpoint";
-constexpr int kFormatVersion = 2;  // 2: the affine velocity field C
+constexpr int kFormatVersion = 3;  // 2: the affine velocity field C; 3: arrays and tables
 // Datasets are chunked (Fletcher32 needs chunks; a chunk must stay below 4 GiB).
 constexpr hsize_t kChunkValues = hsize_t{1} << 20;
 
@@ -82,10 +82,28 @@ void validate(const Context& c, const mpm::Particles<D>& p) {
     need("external_force", p.external_force.size(), D);
 }
 
+void write_extras(const Context& c, hid_t root, const CheckpointExtras& extras) {
+    Hid arrays = hdf5::create_group(c, root, "arrays", "/arrays");
+    for (const auto& [name, values] : extras.arrays)
+        hdf5::write_dataset(c, arrays.get(), name, "/arrays/" + name, values.data(), values.size(), 0,
+                            H5Of<double>::file(), kChunkValues);
+    Hid tables = hdf5::create_group(c, root, "tables", "/tables");
+    for (const Table& t : extras.tables) {
+        const std::string path = "/tables/" + t.name;
+        Hid group = hdf5::create_group(c, tables.get(), t.name, path);
+        for (std::size_t k = 0; k < t.columns.size(); ++k) {
+            const std::string name = "column_" + std::to_string(k);
+            hdf5::write_dataset(c, group.get(), name, path + "/" + name, t.data[k].data(), t.data[k].size(), 0,
+                                H5Of<double>::file(), kChunkValues);
+        }
+        write_string_attribute(c, group.get(), "columns", t.columns, false);
+    }
+}
+
 template <int D>
 void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>& p, double time,
                 long step, const std::vector<std::pair<std::string, double>>& scalars,
-                const std::string& fingerprint) {
+                const std::string& fingerprint, const CheckpointExtras& extras) {
     // Format 1.8+ structures: superblock and object headers carry checksums.
     Hid fapl = c.make(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
     c.check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST),
@@ -132,6 +150,7 @@ void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>&
                                     values.size(), 0, H5Of<double>::file());
         write_string_attribute(c, set.get(), "names", names, false);
     }
+    write_extras(c, h5.get(), extras);
 
     hdf5::flush_and_close(c, h5);
 }
@@ -255,6 +274,58 @@ std::vector<T> read_array(const Context& c, hid_t parent, const std::string& par
     return values;
 }
 
+// The names of the links in a group (in name order: they are looked up by name).
+std::vector<std::string> member_names(const Context& c, hid_t group, const std::string& path) {
+    H5G_info_t info;
+    c.check(H5Gget_info(group, &info), "cannot read group " + path);
+    std::vector<std::string> names;
+    for (hsize_t k = 0; k < info.nlinks; ++k) {
+        const ssize_t len = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
+        if (len < 0) c.fail("cannot read group " + path);
+        std::string name(static_cast<std::size_t>(len), '\0');
+        H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size() + 1, H5P_DEFAULT);
+        names.push_back(name);
+    }
+    return names;
+}
+
+// The length of a 1-D dataset (the arrays and table columns are whatever length they were).
+std::size_t dataset_length(const Context& c, hid_t parent, const std::string& name, const std::string& path) {
+    Hid set = c.make(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open dataset " + path);
+    Hid space = c.make(H5Dget_space(set.get()), H5Sclose, "cannot read dataset " + path);
+    if (H5Sget_simple_extent_ndims(space.get()) != 1) c.fail(path + " is not a 1-D dataset");
+    hsize_t n = 0;
+    c.check(H5Sget_simple_extent_dims(space.get(), &n, nullptr), "cannot read dataset " + path);
+    return static_cast<std::size_t>(n);
+}
+
+CheckpointExtras read_extras(const Context& c, hid_t root) {
+    CheckpointExtras extras;
+    if (H5Lexists(root, "arrays", H5P_DEFAULT) <= 0) c.fail("missing group /arrays");
+    Hid arrays = c.make(H5Gopen2(root, "arrays", H5P_DEFAULT), H5Gclose, "cannot open group /arrays");
+    for (const auto& name : member_names(c, arrays.get(), "/arrays")) {
+        const std::string path = "/arrays/" + name;
+        const std::size_t n = dataset_length(c, arrays.get(), name, path);
+        extras.arrays.emplace_back(name, read_array<double>(c, arrays.get(), "/arrays", name, n, "its own length"));
+    }
+    if (H5Lexists(root, "tables", H5P_DEFAULT) <= 0) c.fail("missing group /tables");
+    Hid tables = c.make(H5Gopen2(root, "tables", H5P_DEFAULT), H5Gclose, "cannot open group /tables");
+    for (const auto& name : member_names(c, tables.get(), "/tables")) {
+        const std::string path = "/tables/" + name;
+        Hid group = c.make(H5Gopen2(tables.get(), name.c_str(), H5P_DEFAULT), H5Gclose, "cannot open group " + path);
+        Table t(name, read_string_attribute(c, group.get(), path, "columns"));
+        std::size_t rows = 0;
+        for (std::size_t k = 0; k < t.columns.size(); ++k) {
+            const std::string column = "column_" + std::to_string(k);
+            if (H5Lexists(group.get(), column.c_str(), H5P_DEFAULT) <= 0) c.fail("missing dataset " + path + "/" + column);
+            if (k == 0) rows = dataset_length(c, group.get(), column, path + "/" + column);
+            t.data[k] = read_array<double>(c, group.get(), path, column, rows, "as many rows as column_0");
+        }
+        extras.tables.push_back(std::move(t));
+    }
+    return extras;
+}
+
 template <int D>
 CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<D>& p) {
     std::error_code ec;
@@ -268,7 +339,7 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
         c.fail(std::string("not an MPM checkpoint (root attribute format is not \"") + kFormat +
                "\")");
     const int version = read_attribute<int>(c, root, "/", "format_version");
-    if (version != kFormatVersion)
+    if (version != kFormatVersion && version != 2)
         c.fail("checkpoint format version " + std::to_string(version) + ", this build reads " +
                std::to_string(kFormatVersion));
 
@@ -334,6 +405,7 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
     const std::vector<double> values =
         read_array<double>(c, root, "/", "scalars", names.size(), "one per name");
     for (std::size_t k = 0; k < names.size(); ++k) info.scalars.emplace_back(names[k], values[k]);
+    if (version >= 3) info.extras = read_extras(c, root);
 
     c.check(h5.reset(), "cannot close");
     p = std::move(q);
@@ -345,14 +417,14 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
 template <int D>
 void write_checkpoint(const fs::path& file, const mpm::Particles<D>& p, double time, long step,
                       const std::vector<std::pair<std::string, double>>& scalars,
-                      const std::string& case_fingerprint) {
+                      const std::string& case_fingerprint, const CheckpointExtras& extras) {
     const hdf5::QuietErrors quiet;
     const Context c(file.string());
     validate(c, p);  // before any file is touched
     fs::path tmp = file;
     tmp += ".tmp";
     try {
-        write_file(c, tmp, p, time, step, scalars, case_fingerprint);
+        write_file(c, tmp, p, time, step, scalars, case_fingerprint, extras);
         sync_path(tmp, false, c);
     } catch (...) {
         // All handles are closed by now (RAII in write_file); the old checkpoint is untouched.
@@ -380,10 +452,10 @@ CheckpointInfo read_checkpoint(const fs::path& file, mpm::Particles<D>& p) {
 
 template void write_checkpoint<2>(const fs::path&, const mpm::Particles<2>&, double, long,
                                   const std::vector<std::pair<std::string, double>>&,
-                                  const std::string&);
+                                  const std::string&, const CheckpointExtras&);
 template void write_checkpoint<3>(const fs::path&, const mpm::Particles<3>&, double, long,
                                   const std::vector<std::pair<std::string, double>>&,
-                                  const std::string&);
+                                  const std::string&, const CheckpointExtras&);
 template CheckpointInfo read_checkpoint<2>(const fs::path&, mpm::Particles<2>&);
 template CheckpointInfo read_checkpoint<3>(const fs::path&, mpm::Particles<3>&);
 

@@ -7,14 +7,23 @@
 #include <utility>
 #include <vector>
 
+#include "core/table.hpp"
 #include "mpm/points/particles.hpp"
 
 namespace pilempm::io {
+
+// What a run keeps besides its particles and scalars: named arrays (the snapshot times)
+// and tables (the history so far), so a resumed run carries on with all of them.
+struct CheckpointExtras {
+    std::vector<std::pair<std::string, std::vector<double>>> arrays;
+    std::vector<Table> tables;
+};
 
 struct CheckpointInfo {
     double time = 0.0;
     long step = 0;
     std::vector<std::pair<std::string, double>> scalars;  // in the order written
+    CheckpointExtras extras;
     std::string case_fingerprint;
     int dimension = 0;
 };
@@ -28,6 +37,9 @@ struct CheckpointInfo {
 //  /particles/state                        state_stride per point, double; attribute
 //                                          "state_stride" (int)
 //  /scalars                                double dataset, attribute "names" (string array)
+//  /arrays/<name>                          double dataset per named array (format 3)
+//  /tables/<name>/column_<k>               double dataset per column, the group's attribute
+//                                          "columns" (string array) names them (format 3)
 //  root attributes  format = "pilempm-mpm-checkpoint", format_version (int), dimension (int),
 //                   num_points (int64), time (double), step (int64), fingerprint (string)
 // Particles::dstrain is per-step scratch and is not stored (read_checkpoint zeroes it).
@@ -39,7 +51,7 @@ struct CheckpointInfo {
 template <int D>
 void write_checkpoint(const std::filesystem::path& file, const mpm::Particles<D>& p, double time,
                       long step, const std::vector<std::pair<std::string, double>>& scalars,
-                      const std::string& case_fingerprint);
+                      const std::string& case_fingerprint, const CheckpointExtras& extras = {});
 
 // Reads a checkpoint written by write_checkpoint<D> into p (replacing all its contents;
 // dstrain becomes zeros). Throws std::runtime_error naming the file and the problem when the
@@ -51,11 +63,11 @@ CheckpointInfo read_checkpoint(const std::filesystem::path& file, mpm::Particles
 extern template void write_checkpoint<2>(const std::filesystem::path&, const mpm::Particles<2>&,
                                          double, long,
                                          const std::vector<std::pair<std::string, double>>&,
-                                         const std::string&);
+                                         const std::string&, const CheckpointExtras&);
 extern template void write_checkpoint<3>(const std::filesystem::path&, const mpm::Particles<3>&,
                                          double, long,
                                          const std::vector<std::pair<std::string, double>>&,
-                                         const std::string&);
+                                         const std::string&, const CheckpointExtras&);
 extern template CheckpointInfo read_checkpoint<2>(const std::filesystem::path&,
                                                   mpm::Particles<2>&);
 extern template CheckpointInfo read_checkpoint<3>(const std::filesystem::path&,

@@ -60,6 +60,12 @@ void PvdCollection::add(double time, std::string file) {
     steps_.push_back({time, std::move(file)});
 }
 
+std::vector<double> PvdCollection::times() const {
+    std::vector<double> out;
+    for (const Step& s : steps_) out.push_back(s.time);
+    return out;
+}
+
 void PvdCollection::finish() {
     if (pvd_written_ && steps_in_pvd_ == steps_.size()) return;
     write();

@@ -26,6 +26,7 @@ public:
     // Records a written step; `file` is relative to dir, as the .pvd lists it.
     void add(double time, std::string file);
     std::size_t size() const { return steps_.size(); }
+    std::vector<double> times() const;
 
     // Writes dir/<basename>.pvd listing all steps with their times (via a .tmp renamed over
     // it, so a reader never sees a half-written collection); idempotent: does nothing when

@@ -53,6 +53,10 @@ public:
     void finish();
 
     std::size_t steps_written() const;
+    std::vector<double> step_times() const;
+    // A resumed run's series: the steps an earlier run wrote into dir (their files are there)
+    // are listed again, so numbering and the .pvd carry on from them. Only before write().
+    void adopt_written_steps(const std::vector<double>& times);
     std::filesystem::path pvd_path() const;
 
 private:

@@ -59,6 +59,8 @@ public:
         time_ = t;
         steps_ = steps;
     }
+    // A resumed run continues the energy ledger of the run it resumes.
+    void set_absorbed_energy(double e) { absorbed_ = e; }
 
 private:
     void velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C, double* out) const;

@@ -1,0 +1,68 @@
+#include "coupling/driver/recorders.hpp"
+
+namespace pilempm::coupling {
+
+template <int D>
+double elastic_energy(const mpm::Particles<D>& p) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (int k = 0; k < 6; ++k) e += 0.5 * p.stress[6 * i + k] * p.strain[6 * i + k] * p.volume[i];
+    return e;
+}
+
+template <int D>
+void EnergyRecorder<D>::add_columns(std::vector<std::string>& columns) const {
+    columns.insert(columns.end(),
+                   {"kinetic_energy_J", "elastic_energy_J", "absorbed_energy_J", "unbalanced_force_ratio"});
+}
+
+template <int D>
+void EnergyRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver,
+                               std::vector<double>& row) const {
+    row.push_back(solver.kinetic_energy());
+    row.push_back(elastic_energy(m.particles));
+    row.push_back(solver.absorbed_energy());
+    row.push_back(solver.unbalanced_force_ratio());
+}
+
+template <int D>
+void ReactionRecorder<D>::add_columns(std::vector<std::string>& columns) const {
+    const char* axis = "xyz";
+    for (int d = 0; d < D; ++d) columns.push_back(std::string("reaction_") + axis[d] + "_N");
+}
+
+template <int D>
+void ReactionRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>&, std::vector<double>& row) const {
+    for (int d = 0; d < D; ++d) {
+        double r = 0.0;
+        for (int n : nodes_) r += m.grid.reaction[D * n + d];
+        row.push_back(r);
+    }
+}
+
+template <int D>
+void ProbeRecorder<D>::add_columns(std::vector<std::string>& columns) const {
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+        columns.push_back("probe" + std::to_string(k) + "_velocity_vertical_m_s");
+        columns.push_back("probe" + std::to_string(k) + "_stress_vertical_Pa");
+    }
+}
+
+template <int D>
+void ProbeRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>&, std::vector<double>& row) const {
+    for (int p : points_) {
+        row.push_back(m.particles.v[D * p + D - 1]);
+        row.push_back(m.particles.stress[6 * p + (D == 2 ? 1 : 2)]);
+    }
+}
+
+template double elastic_energy<2>(const mpm::Particles<2>&);
+template double elastic_energy<3>(const mpm::Particles<3>&);
+template class EnergyRecorder<2>;
+template class EnergyRecorder<3>;
+template class ReactionRecorder<2>;
+template class ReactionRecorder<3>;
+template class ProbeRecorder<2>;
+template class ProbeRecorder<3>;
+
+}  // namespace pilempm::coupling

@@ -1,0 +1,58 @@
+#pragma once
+// What a run records into its history, one row per sample: each recorder adds its columns
+// (named with units and sign) and fills them from the model and solver. The coupled model
+// adds its own (pile head, contact forces) beside these.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpm/solver/mpm_solver.hpp"
+
+namespace pilempm::coupling {
+
+template <int D>
+class Recorder {
+public:
+    virtual ~Recorder() = default;
+    virtual void add_columns(std::vector<std::string>& columns) const = 0;
+    virtual void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const = 0;
+};
+
+// Kinetic and elastic energy, the energy the absorbing boundaries took out, and the
+// unbalanced force ratio of the last step.
+template <int D>
+class EnergyRecorder final : public Recorder<D> {
+public:
+    void add_columns(std::vector<std::string>& columns) const override;
+    void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const override;
+};
+
+// Sum of the reactions of the grid nodes with prescribed velocities, per axis, N.
+template <int D>
+class ReactionRecorder final : public Recorder<D> {
+public:
+    explicit ReactionRecorder(std::vector<int> nodes) : nodes_(std::move(nodes)) {}
+    void add_columns(std::vector<std::string>& columns) const override;
+    void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const override;
+
+private:
+    std::vector<int> nodes_;
+};
+
+// Vertical velocity and vertical stress of given material points (probes).
+template <int D>
+class ProbeRecorder final : public Recorder<D> {
+public:
+    explicit ProbeRecorder(std::vector<int> points) : points_(std::move(points)) {}
+    void add_columns(std::vector<std::string>& columns) const override;
+    void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const override;
+
+private:
+    std::vector<int> points_;
+};
+
+// 0.5 sigma : eps V summed over the points (the strain energy of a linear-elastic body).
+template <int D>
+double elastic_energy(const mpm::Particles<D>& p);
+
+}  // namespace pilempm::coupling

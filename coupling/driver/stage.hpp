@@ -1,0 +1,33 @@
+#pragma once
+// The stages of a run and the loads switched per stage. A quasi-static stage relaxes to
+// equilibrium under local damping in pseudo-time (the clock stands still); a dynamic stage
+// runs for its duration in real time. Load times count from the start of the stage, so a
+// pulse acts at the start of every dynamic stage it is switched on in.
+#include <string>
+#include <vector>
+
+#include "mpm/solver/mpm_solver.hpp"
+
+namespace pilempm::coupling {
+
+struct StageSpec {
+    std::string name = "stage";
+    bool quasi_static = false;
+    double duration = 0.0;       // s (dynamic)
+    long max_steps = 100000;     // quasi-static
+    double tolerance = 1e-4;     // unbalanced force ratio that ends a quasi-static stage
+    double local_damping = 0.0;  // Cundall's alpha
+};
+
+// A force on the face of a material point (from a pressure) and when it acts.
+struct StageLoad {
+    mpm::SurfaceLoad load;
+    double duration = 0.0;     // s; 0: held for the whole stage, else a pulse from the stage start
+    std::vector<int> stages;   // indices of the stages it acts in; empty: every stage
+    bool acts_in(int stage) const;
+    // Held loads act in quasi-static stages; pulses only in dynamic ones, for `duration`
+    // after the stage's start.
+    bool active(int stage, bool quasi_static, double time_in_stage) const;
+};
+
+}  // namespace pilempm::coupling

@@ -1,0 +1,168 @@
+#include "coupling/driver/stage_driver.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace pilempm::coupling {
+
+template <int D>
+StageDriver<D>::StageDriver(mpm::MpmModel<D>& model, std::vector<StageSpec> stages, std::vector<StageLoad> loads,
+                            DriverSettings settings, StageObserver<D>* observer)
+    : m_(model),
+      solver_(model),
+      stages_(std::move(stages)),
+      loads_(std::move(loads)),
+      settings_(settings),
+      observer_(observer ? observer : &quiet_),
+      history_("history", {"time_s", "step", "stage"}),
+      flip_dynamic_(model.flip),
+      apic_dynamic_(model.apic) {
+    state_.next_snapshot = settings_.snapshot_interval;
+}
+
+template <int D>
+void StageDriver<D>::add_recorder(std::unique_ptr<Recorder<D>> recorder) {
+    if (history_.rows() > 0) throw std::logic_error("recorders are added before the run");
+    recorder->add_columns(history_.columns);
+    history_.data.resize(history_.columns.size());
+    recorders_.push_back(std::move(recorder));
+}
+
+template <int D>
+void StageDriver<D>::resume(const DriverState& state, double time, long steps, double absorbed_energy, Table history) {
+    if (history.columns != history_.columns)
+        throw std::runtime_error("the checkpoint's history has other columns than this run records");
+    state_ = state;
+    solver_.set_time(time, steps);
+    solver_.set_absorbed_energy(absorbed_energy);
+    history_ = std::move(history);
+}
+
+template <int D>
+void StageDriver<D>::apply_loads(bool quasi_static, double time_in_stage) {
+    auto& active = m_.surface_loads;
+    active.clear();
+    for (const auto& l : loads_)
+        if (l.active(state_.stage, quasi_static, time_in_stage)) active.push_back(l.load);
+}
+
+template <int D>
+void StageDriver<D>::record() {
+    std::vector<double> row = {solver_.time(), static_cast<double>(solver_.steps()),
+                               static_cast<double>(state_.stage + 1)};
+    for (const auto& r : recorders_) r->sample(m_, solver_, row);
+    for (std::size_t k = 0; k < row.size(); ++k) history_.data[k].push_back(row[k]);
+}
+
+template <int D>
+void StageDriver<D>::checkpoint() {
+    observer_->checkpoint(state_, m_, solver_, history_);
+}
+
+// After each step: the periodic checkpoint, then the stop request (checkpointed too).
+template <int D>
+bool StageDriver<D>::periodic_checkpoint_and_stop(const StopRequest* stop) {
+    if (settings_.checkpoint_every > 0 && solver_.steps() % settings_.checkpoint_every == 0) checkpoint();
+    if (!stop) return false;
+    stop->poll(solver_.steps());
+    if (!stop->requested()) return false;
+    checkpoint();
+    return true;
+}
+
+// Pseudo-time: the clock stands still, held loads only, until equilibrium. The local damping
+// is the dissipation: PIC's velocity projection would fight it (pure PIC never settles), so
+// the stage runs pure FLIP. Returns false when stopped.
+template <int D>
+bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* stop) {
+    m_.flip = 1.0;
+    m_.apic = false;
+    StageReport report;
+    long n = state_.stage_steps;
+    for (; n < st.max_steps; ++n) {
+        apply_loads(true, 0.0);
+        solver_.step(solver_.stable_time_step());
+        state_.stage_steps = n + 1;
+        if (n % settings_.quasi_static_record_every == 0) record();
+        if (n >= 100 && solver_.unbalanced_force_ratio() < st.tolerance) break;
+        if (periodic_checkpoint_and_stop(stop)) {
+            report.steps = n;
+            report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+            report.stopped = true;
+            observer_->stage_end(state_.stage, st, report);
+            return false;
+        }
+        observer_->stage_progress(st, state_, solver_);
+    }
+    m_.flip = flip_dynamic_;
+    m_.apic = apic_dynamic_;
+    std::fill(m_.particles.v.begin(), m_.particles.v.end(), 0.0);  // a nil step: start at rest
+    std::fill(m_.particles.C.begin(), m_.particles.C.end(), 0.0);
+    solver_.set_time(state_.stage_start_time, solver_.steps());
+    report.steps = n;
+    report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+    report.in_equilibrium = report.unbalanced_ratio < st.tolerance;
+    observer_->stage_end(state_.stage, st, report);
+    return true;
+}
+
+template <int D>
+bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
+    const double t_end = state_.stage_start_time + st.duration;
+    StageReport report;
+    while (solver_.time() < t_end - 1e-15) {
+        apply_loads(false, solver_.time() - state_.stage_start_time);
+        const double dt = std::min(solver_.stable_time_step(), t_end - solver_.time());
+        solver_.step(dt);
+        ++state_.stage_steps;
+        record();
+        if (settings_.snapshot_interval > 0.0 && solver_.time() >= state_.next_snapshot - 1e-12) {
+            observer_->snapshot(solver_.time(), m_);
+            state_.next_snapshot += settings_.snapshot_interval;
+        }
+        if (periodic_checkpoint_and_stop(stop)) {
+            report.steps = state_.stage_steps;
+            report.stopped = true;
+            observer_->stage_end(state_.stage, st, report);
+            return false;
+        }
+        observer_->stage_progress(st, state_, solver_);
+    }
+    report.steps = state_.stage_steps;
+    report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+    observer_->stage_end(state_.stage, st, report);
+    return true;
+}
+
+template <int D>
+typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
+    if (!state_.initial_snapshot_written) {
+        observer_->snapshot(solver_.time(), m_);
+        state_.initial_snapshot_written = true;
+    }
+    for (; state_.stage < static_cast<int>(stages_.size()); ++state_.stage) {
+        const StageSpec& st = stages_[state_.stage];
+        if (!state_.stage_begun) {
+            state_.stage_begun = true;
+            state_.stage_start_time = solver_.time();
+            state_.stage_steps = 0;
+        }
+        observer_->stage_begin(state_.stage, st);
+        m_.local_damping = st.local_damping;
+        const bool finished = st.quasi_static ? run_quasi_static(st, stop) : run_dynamic(st, stop);
+        if (!finished) return Outcome::Stopped;
+        observer_->snapshot(solver_.time(), m_);
+        // The checkpoint at a stage's end names the next stage, not yet begun.
+        state_.stage_begun = false;
+        state_.stage_steps = 0;
+        ++state_.stage;
+        checkpoint();
+        --state_.stage;
+    }
+    return Outcome::Completed;
+}
+
+template class StageDriver<2>;
+template class StageDriver<3>;
+
+}  // namespace pilempm::coupling

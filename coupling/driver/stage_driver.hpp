@@ -1,0 +1,104 @@
+#pragma once
+// The stage driver: runs a model through its stages (quasi-static relaxation, dynamic
+// phases), switches the loads per stage, samples the recorders into the history, takes
+// snapshots on a clock of simulated time, and checkpoints. Everything it carries from one
+// step to the next is in DriverState, the solver's clock and the history, so a run resumed
+// from a checkpoint continues exactly as if it had never stopped. Output goes through a
+// StageObserver (VTK, checkpoint files, progress): the driver itself writes nothing.
+#include <memory>
+#include <vector>
+
+#include "core/table.hpp"
+#include "coupling/driver/recorders.hpp"
+#include "coupling/driver/stage.hpp"
+#include "coupling/driver/stop_request.hpp"
+#include "mpm/solver/mpm_solver.hpp"
+
+namespace pilempm::coupling {
+
+// The driver's own state between steps (checkpointed with the model).
+struct DriverState {
+    int stage = 0;                  // stage running, or next to run (== count: all done)
+    bool stage_begun = false;       // the stage's start time is set (it was under way)
+    double stage_start_time = 0.0;  // s: solver time when the stage began
+    long stage_steps = 0;           // steps taken in the stage
+    double next_snapshot = 0.0;     // s of simulated time
+    bool initial_snapshot_written = false;
+};
+
+struct DriverSettings {
+    double snapshot_interval = 0.0;  // s; 0: snapshots at stage ends only
+    long checkpoint_every = 0;       // steps; 0: at stage ends (and on a stop) only
+    int quasi_static_record_every = 10;  // steps between history rows in quasi-static stages
+};
+
+struct StageReport {
+    long steps = 0;              // the last step's index within the stage
+    double unbalanced_ratio = 0.0;
+    bool in_equilibrium = false;  // quasi-static: the tolerance was met
+    bool stopped = false;         // a stop request ended the stage early
+};
+
+template <int D>
+class StageObserver {
+public:
+    virtual ~StageObserver() = default;
+    virtual void snapshot(double /*time*/, const mpm::MpmModel<D>& /*model*/) {}
+    virtual void checkpoint(const DriverState& /*state*/, const mpm::MpmModel<D>& /*model*/,
+                            const mpm::MpmSolver<D>& /*solver*/, const Table& /*history*/) {}
+    virtual void stage_begin(int /*stage*/, const StageSpec& /*spec*/) {}
+    virtual void stage_progress(const StageSpec& /*spec*/, const DriverState& /*state*/,
+                                const mpm::MpmSolver<D>& /*solver*/) {}
+    // Also called when a stop ends the stage early.
+    virtual void stage_end(int /*stage*/, const StageSpec& /*spec*/, const StageReport& /*report*/) {}
+};
+
+template <int D>
+class StageDriver {
+public:
+    enum class Outcome { Completed, Stopped };
+
+    StageDriver(mpm::MpmModel<D>& model, std::vector<StageSpec> stages, std::vector<StageLoad> loads,
+                DriverSettings settings, StageObserver<D>* observer = nullptr);
+
+    // History columns: time_s, step, stage (1-based), then each recorder's, in order added.
+    void add_recorder(std::unique_ptr<Recorder<D>> recorder);
+
+    // A run resumed from a checkpoint: the particles are already in the model; this brings
+    // back the driver's state, the solver's clock and absorbed energy, and the history.
+    void resume(const DriverState& state, double time, long steps, double absorbed_energy, Table history);
+
+    // Runs the stages left; Stopped when `stop` asked for it (a checkpoint has been taken).
+    Outcome run(const StopRequest* stop = nullptr);
+
+    const Table& history() const { return history_; }
+    const DriverState& state() const { return state_; }
+    const mpm::MpmSolver<D>& solver() const { return solver_; }
+    const std::vector<StageSpec>& stages() const { return stages_; }
+
+private:
+    void apply_loads(bool quasi_static, double time_in_stage);
+    void record();
+    void checkpoint();
+    bool periodic_checkpoint_and_stop(const StopRequest* stop);
+    bool run_quasi_static(const StageSpec& st, const StopRequest* stop);
+    bool run_dynamic(const StageSpec& st, const StopRequest* stop);
+
+    mpm::MpmModel<D>& m_;
+    mpm::MpmSolver<D> solver_;
+    std::vector<StageSpec> stages_;
+    std::vector<StageLoad> loads_;
+    DriverSettings settings_;
+    StageObserver<D>* observer_;
+    StageObserver<D> quiet_;
+    std::vector<std::unique_ptr<Recorder<D>>> recorders_;
+    Table history_;
+    DriverState state_;
+    double flip_dynamic_;  // the model's velocity transfer, restored after quasi-static stages
+    bool apic_dynamic_;
+};
+
+extern template class StageDriver<2>;
+extern template class StageDriver<3>;
+
+}  // namespace pilempm::coupling

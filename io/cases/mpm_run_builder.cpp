@@ -1,0 +1,161 @@
+#include "io/cases/mpm_run_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pilempm::io {
+
+namespace {
+
+template <int D>
+bool in_region(const MpmRegionInput& r, const double* x) {
+    if (r.kind == MpmRegionInput::Cylinder) {
+        const double dx = x[0] - r.centre[0], dy = x[1] - r.centre[1];
+        return dx * dx + dy * dy <= r.radius * r.radius && x[D - 1] >= r.centre[D - 1] &&
+               x[D - 1] <= r.centre[D - 1] + r.height;
+    }
+    for (int d = 0; d < D; ++d)
+        if (x[d] < r.box.min[d] || x[d] > r.box.max[d]) return false;
+    return true;
+}
+
+template <int D>
+bool in_box(const MpmBox& b, const double* x) {
+    for (int d = 0; d < D; ++d)
+        if (x[d] < b.min[d] - 1e-12 || x[d] > b.max[d] + 1e-12) return false;
+    return true;
+}
+
+}  // namespace
+
+template <int D>
+MpmRun<D> build_mpm_run(const MpmCase& c) {
+    MpmRun<D> run;
+    auto& m = run.model;
+    for (int d = 0; d < D; ++d) {
+        m.grid.origin[d] = c.origin[d];
+        m.grid.cells[d] = c.cells[d];
+        m.grid.spacing[d] = c.size[d] / c.cells[d];
+    }
+    m.grid.allocate();
+    m.shape = c.shape;
+    m.axisymmetric = c.axisymmetric;
+    m.gravity[D - 1] = -c.gravity;
+    m.flip = c.flip;
+    m.apic = c.apic;
+    m.cfl = c.cfl;
+    int stride = 0;
+    for (const auto& mat : c.materials) {
+        m.materials.push_back(mpm::make_constitutive_model(mat));
+        stride = std::max(stride, m.materials.back()->num_state());
+    }
+    m.particles.state_stride = stride;
+    for (std::size_t k = 0; k < c.regions.size(); ++k) {
+        const auto& r = c.regions[k];
+        // The first region that holds a point owns it.
+        auto inside = [&](const double* x) {
+            if (!in_region<D>(r, x)) return false;
+            for (std::size_t j = 0; j < k; ++j)
+                if (in_region<D>(c.regions[j], x)) return false;
+            return true;
+        };
+        mpm::fill_region<D>(m.grid, m.particles, inside, c.per_cell, c.materials[r.material].density, r.material,
+                            c.axisymmetric);
+    }
+    if (m.particles.size() == 0) throw std::runtime_error("the regions hold no material points");
+    for (const auto& b : c.boundaries) {
+        // Absorbing boundaries take the first material's moduli (a pressure-dependent model
+        // states them at its reference pressure).
+        const auto& mat = c.materials.front();
+        const double G = m.materials.front()->shear_modulus(), M = m.materials.front()->p_wave_modulus();
+        mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, mat.density, std::sqrt(M / mat.density),
+                               std::sqrt(G / mat.density), c.axisymmetric, b.friction);
+    }
+    auto& p = m.particles;
+    for (const auto& pr : c.pressures)
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (!in_box<D>(pr.box, &p.x[D * i])) continue;
+            double area = 1.0;
+            for (int d = 0; d < D; ++d)
+                if (d != pr.normal_axis) area *= p.domain0[D * D * i + D * d + d];
+            // Per radian the face's area scales with its own radius (the particle's face,
+            // not its centre, when the face is normal to r).
+            if (c.axisymmetric)
+                area *= p.x[D * i] + (pr.normal_axis == 0 ? 0.5 * pr.normal_sign * p.domain0[0] : 0.0);
+            // A pressure's force on each loaded point: -p n x the point's face area on that face.
+            coupling::StageLoad load;
+            load.duration = pr.duration;
+            load.stages = pr.stages;
+            load.load.point = static_cast<int>(i);
+            load.load.force[pr.normal_axis] = -pr.pressure * pr.normal_sign * area;
+            load.load.offset[pr.normal_axis] = 0.5 * pr.normal_sign * p.domain0[D * D * i + D * pr.normal_axis + pr.normal_axis];
+            run.loads.push_back(load);
+        }
+    for (const auto& v : c.velocities)
+        for (int n = 0; n < m.grid.num_nodes(); ++n) {
+            const auto ijk = m.grid.ijk(n);
+            double x[D];
+            for (int d = 0; d < D; ++d) x[d] = m.grid.coordinate(d, ijk[d]);
+            if (!in_box<D>(v.box, x)) continue;
+            for (int d = 0; d < D; ++d)
+                if (v.components[d]) {
+                    m.grid.fixed[D * n + d] = 1;
+                    m.grid.prescribed[D * n + d] = v.velocity[d];
+                }
+            run.reaction_nodes.push_back(n);
+        }
+    if (c.k0_initial_stress) {
+        auto material_at = [&](double z) -> const MpmMaterialInput& {
+            for (const auto& r : c.regions)
+                if (r.kind != MpmRegionInput::Cylinder && z >= r.box.min[D - 1] && z <= r.box.max[D - 1])
+                    return c.materials[r.material];
+            return c.materials.front();
+        };
+        mpm::apply_k0_stress<D>(p, c.surface, c.gravity, [&](double z) { return material_at(z).density; },
+                                [&](double z) { return mpm::k0_of(material_at(z)); });
+    }
+    for (std::size_t i = 0; i < p.size(); ++i)
+        m.materials[p.material[i]]->initialise_state(&p.stress[6 * i], p.state.data() + p.state_stride * i);
+    for (const auto& probe : c.probes) {
+        int best = 0;
+        double d2best = 1e300;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            double d2 = 0.0;
+            for (int d = 0; d < D; ++d) d2 += (p.x[D * i + d] - probe[d]) * (p.x[D * i + d] - probe[d]);
+            if (d2 < d2best) d2best = d2, best = static_cast<int>(i);
+        }
+        run.probe_points.push_back(best);
+    }
+    run.x0 = p.x;
+    for (const auto& st : c.stages) {
+        coupling::StageSpec s;
+        s.name = st.name;
+        s.quasi_static = st.quasi_static;
+        s.duration = st.duration;
+        s.max_steps = st.max_steps;
+        s.tolerance = st.tolerance;
+        s.local_damping = st.local_damping;
+        run.stages.push_back(s);
+    }
+    run.settings.snapshot_interval = c.snapshot_interval;
+    run.settings.checkpoint_every = c.checkpoint_every;
+    return run;
+}
+
+template <int D>
+std::vector<std::string> state_names(const mpm::MpmModel<D>& m) {
+    const mpm::ConstitutiveModel* named = m.materials.front().get();
+    for (const auto& mat : m.materials)
+        if (mat->num_state() > named->num_state()) named = mat.get();
+    std::vector<std::string> names;
+    for (int k = 0; k < m.particles.state_stride; ++k) names.push_back(named->state_name(k));
+    return names;
+}
+
+template MpmRun<2> build_mpm_run<2>(const MpmCase&);
+template MpmRun<3> build_mpm_run<3>(const MpmCase&);
+template std::vector<std::string> state_names<2>(const mpm::MpmModel<2>&);
+template std::vector<std::string> state_names<3>(const mpm::MpmModel<3>&);
+
+}  // namespace pilempm::io

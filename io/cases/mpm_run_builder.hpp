@@ -1,0 +1,33 @@
+#pragma once
+// An MPM case turned into a run: the model (grid, points, materials, boundaries, initial
+// stress), the loads and stages the stage driver switches, and what the recorders watch.
+#include <vector>
+
+#include "coupling/driver/stage_driver.hpp"
+#include "io/cases/mpm_case.hpp"
+
+namespace pilempm::io {
+
+template <int D>
+struct MpmRun {
+    mpm::MpmModel<D> model;
+    std::vector<coupling::StageSpec> stages;
+    std::vector<coupling::StageLoad> loads;
+    coupling::DriverSettings settings;
+    std::vector<int> probe_points;    // the material point nearest each output.probes entry
+    std::vector<int> reaction_nodes;  // grid nodes with prescribed velocities
+    std::vector<double> x0;           // initial point positions
+};
+
+// Throws std::runtime_error when the regions hold no material point.
+template <int D>
+MpmRun<D> build_mpm_run(const MpmCase& c);
+
+// The names of the state arrays written per point: those of the material with the most.
+template <int D>
+std::vector<std::string> state_names(const mpm::MpmModel<D>& m);
+
+extern template MpmRun<2> build_mpm_run<2>(const MpmCase&);
+extern template MpmRun<3> build_mpm_run<3>(const MpmCase&);
+
+}  // namespace pilempm::io

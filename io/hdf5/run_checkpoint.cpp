@@ -1,0 +1,61 @@
+#include "io/hdf5/run_checkpoint.hpp"
+
+#include <stdexcept>
+
+#include "io/hdf5/mpm_checkpoint.hpp"
+
+namespace pilempm::io {
+
+template <int D>
+void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particles<D>& p, const RunCheckpoint& run) {
+    const auto& s = run.driver;
+    const std::vector<std::pair<std::string, double>> scalars = {
+        {"stage", static_cast<double>(s.stage)},
+        {"stage_begun", s.stage_begun ? 1.0 : 0.0},
+        {"stage_start_time", s.stage_start_time},
+        {"stage_steps", static_cast<double>(s.stage_steps)},
+        {"next_snapshot", s.next_snapshot},
+        {"initial_snapshot_written", s.initial_snapshot_written ? 1.0 : 0.0},
+        {"absorbed_energy", run.absorbed_energy},
+    };
+    CheckpointExtras extras;
+    extras.arrays.emplace_back("snapshot_times", run.snapshot_times);
+    extras.tables.push_back(run.history);
+    write_checkpoint<D>(file, p, run.time, run.steps, scalars, run.case_fingerprint, extras);
+}
+
+template <int D>
+RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Particles<D>& p) {
+    const CheckpointInfo info = read_checkpoint<D>(file, p);
+    auto scalar = [&](const char* name) {
+        for (const auto& [key, value] : info.scalars)
+            if (key == name) return value;
+        throw std::runtime_error("MPM checkpoint " + file.string() + ": no scalar " + name +
+                                 " (written by an older pilempm?)");
+    };
+    RunCheckpoint run;
+    run.time = info.time;
+    run.steps = info.step;
+    run.case_fingerprint = info.case_fingerprint;
+    run.driver.stage = static_cast<int>(scalar("stage"));
+    run.driver.stage_begun = scalar("stage_begun") != 0.0;
+    run.driver.stage_start_time = scalar("stage_start_time");
+    run.driver.stage_steps = static_cast<long>(scalar("stage_steps"));
+    run.driver.next_snapshot = scalar("next_snapshot");
+    run.driver.initial_snapshot_written = scalar("initial_snapshot_written") != 0.0;
+    run.absorbed_energy = scalar("absorbed_energy");
+    for (const auto& [name, values] : info.extras.arrays)
+        if (name == "snapshot_times") run.snapshot_times = values;
+    bool have_history = false;
+    for (const auto& t : info.extras.tables)
+        if (t.name == "history") run.history = t, have_history = true;
+    if (!have_history) throw std::runtime_error("MPM checkpoint " + file.string() + ": no history table");
+    return run;
+}
+
+template void write_run_checkpoint<2>(const std::filesystem::path&, const mpm::Particles<2>&, const RunCheckpoint&);
+template void write_run_checkpoint<3>(const std::filesystem::path&, const mpm::Particles<3>&, const RunCheckpoint&);
+template RunCheckpoint read_run_checkpoint<2>(const std::filesystem::path&, mpm::Particles<2>&);
+template RunCheckpoint read_run_checkpoint<3>(const std::filesystem::path&, mpm::Particles<3>&);
+
+}  // namespace pilempm::io

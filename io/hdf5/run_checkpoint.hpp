@@ -1,0 +1,32 @@
+#pragma once
+// The whole state of a staged run in one checkpoint: the particles, the solver's clock and
+// energy ledger, the stage driver's state, the history so far and the times of the VTK
+// snapshots already written. Resuming from it continues the run as if it had never stopped.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/table.hpp"
+#include "coupling/driver/stage_driver.hpp"
+#include "mpm/points/particles.hpp"
+
+namespace pilempm::io {
+
+struct RunCheckpoint {
+    coupling::DriverState driver;
+    double time = 0.0;             // s, the solver's clock
+    long steps = 0;
+    double absorbed_energy = 0.0;  // J, taken out by the absorbing boundaries so far
+    Table history;
+    std::vector<double> snapshot_times;  // s, one per VTK file written
+    std::string case_fingerprint;
+};
+
+template <int D>
+void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particles<D>& p, const RunCheckpoint& run);
+
+// Throws std::runtime_error naming the file when it is not such a checkpoint.
+template <int D>
+RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Particles<D>& p);
+
+}  // namespace pilempm::io

@@ -1,0 +1,49 @@
+#pragma once
+// What a staged MPM run writes while it runs: the VTK series of the material points, the
+// checkpoint (the whole run state, see run_checkpoint.hpp), progress on a terminal and a
+// line per finished stage. The stage driver calls it; it decides nothing about the run.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "coupling/driver/stage_driver.hpp"
+#include "io/writers/staged_directory.hpp"
+#include "io/writers/terminal_progress.hpp"
+#include "io/writers/vtk_particle_writer.hpp"
+
+namespace pilempm::io {
+
+template <int D>
+class MpmRunOutput final : public coupling::StageObserver<D> {
+public:
+    // Writes into staged.path(): vtk/particles_NNNNNN.vtu + particles.pvd, checkpoint.h5.
+    MpmRunOutput(StagedDirectory& staged, std::vector<std::string> state_names, std::string case_fingerprint,
+                 bool quiet);
+
+    // A resumed run: the snapshots the interrupted run wrote stay in the series.
+    void adopt_snapshots(const std::vector<double>& times) { vtk_.adopt_written_steps(times); }
+    std::filesystem::path checkpoint_path() const { return staged_.path() / "checkpoint.h5"; }
+    // Writes the .pvd.
+    void finish() { vtk_.finish(); }
+
+    void snapshot(double time, const mpm::MpmModel<D>& model) override;
+    void checkpoint(const coupling::DriverState& state, const mpm::MpmModel<D>& model,
+                    const mpm::MpmSolver<D>& solver, const Table& history) override;
+    void stage_begin(int stage, const coupling::StageSpec& spec) override;
+    void stage_progress(const coupling::StageSpec& spec, const coupling::DriverState& state,
+                        const mpm::MpmSolver<D>& solver) override;
+    void stage_end(int stage, const coupling::StageSpec& spec, const coupling::StageReport& report) override;
+
+private:
+    StagedDirectory& staged_;
+    ParticleVtkSeries<D> vtk_;
+    std::string fingerprint_;
+    bool quiet_;
+    std::unique_ptr<TerminalProgress> progress_;
+};
+
+extern template class MpmRunOutput<2>;
+extern template class MpmRunOutput<3>;
+
+}  // namespace pilempm::io

@@ -1,0 +1,223 @@
+// The stage driver without the executable: loads switched per stage with stage-relative
+// times (a pulse's impulse against p A T), a quasi-static stage that relaxes and ends at
+// rest, and a run stopped by a real signal and resumed from what the observer checkpointed
+// (driver state, solver clock, history, particles) that ends exactly as an uninterrupted one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <memory>
+
+#include "coupling/driver/stage_driver.hpp"
+#include "mpm/setup/model_setup.hpp"
+
+using namespace pilempm;
+using namespace pilempm::coupling;
+
+namespace {
+
+constexpr double kWidth = 0.4, kHeight = 1.0, kDensity = 2000.0;
+
+// An elastic block kWidth x kHeight with its lower left corner at `corner`, on a 0.1 m grid
+// of `cells`, no gravity, no supports: a free body.
+mpm::MpmModel<2> block(std::array<double, 2> corner = {0.2, 0.2}, std::array<int, 2> cells = {8, 16}) {
+    mpm::MpmModel<2> m;
+    m.grid.origin = {0.0, 0.0};
+    m.grid.spacing = {0.1, 0.1};
+    m.grid.cells = cells;
+    m.grid.allocate();
+    m.flip = 1.0;
+    m.materials.push_back(std::make_unique<mpm::LinearElastic>(20e6, 0.3));
+    mpm::fill_region<2>(m.grid, m.particles, [corner](const double* x) {
+        return x[0] > corner[0] && x[0] < corner[0] + kWidth && x[1] > corner[1] && x[1] < corner[1] + kHeight;
+    }, 2, kDensity, 0, false);
+    return m;
+}
+
+// A pressure p on the top face (outward normal +y), the force -p A split over the top row.
+std::vector<StageLoad> top_pressure(const mpm::MpmModel<2>& m, double p, double duration, std::vector<int> stages) {
+    std::vector<StageLoad> loads;
+    const auto& pts = m.particles;
+    double top = -1e300;
+    for (std::size_t i = 0; i < pts.size(); ++i) top = std::max(top, pts.x[2 * i + 1] + 0.5 * pts.domain0[4 * i + 3]);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const double half = 0.5 * pts.domain0[4 * i + 3];
+        if (pts.x[2 * i + 1] + half < top - 1e-9) continue;
+        StageLoad l;
+        l.load.point = static_cast<int>(i);
+        l.load.offset[1] = half;
+        l.load.force[1] = -p * pts.domain0[4 * i + 0];
+        l.duration = duration;
+        l.stages = stages;
+        loads.push_back(l);
+    }
+    return loads;
+}
+
+StageSpec dynamic(const char* name, double duration) {
+    StageSpec s;
+    s.name = name;
+    s.duration = duration;
+    return s;
+}
+
+double momentum_y(const StageDriver<2>& d) { return d.solver().momentum()[1]; }
+
+}  // namespace
+
+// A pulse switched on in the second stage only acts there, from that stage's start: the
+// impulse is p A T (to within one step, the pulse ends between steps), against zero for a
+// pulse timed from the start of the run.
+TEST(StageDriver, PulseTimesCountFromTheStageStart) {
+    const double p = 50e3, T = 0.01;
+    for (int acts_in_both : {0, 1}) {
+        mpm::MpmModel<2> m = block();
+        const auto loads = top_pressure(m, p, T, acts_in_both ? std::vector<int>{} : std::vector<int>{1});
+        StageDriver<2> driver(m, {dynamic("rest", 0.03), dynamic("blow", 0.03)}, loads, {});
+        const double dt = driver.solver().stable_time_step();
+        ASSERT_LT(dt, T / 20);
+        driver.run();
+        const double expected = -p * kWidth * T * (acts_in_both ? 2 : 1);
+        EXPECT_NEAR(momentum_y(driver), expected, p * kWidth * dt * (acts_in_both ? 2 : 1))
+            << (acts_in_both ? "pulse in both stages" : "pulse in the second stage");
+    }
+}
+
+// A held load acts only in the stages it names; with none it acts in all.
+TEST(StageDriver, HeldLoadsActInTheirStagesOnly) {
+    mpm::MpmModel<2> m = block();
+    const double p = 10e3;
+    StageDriver<2> driver(m, {dynamic("first", 0.02), dynamic("second", 0.01)}, top_pressure(m, p, 0.0, {1}), {});
+    driver.run();
+    // Only the second stage's 0.01 s of push.
+    EXPECT_NEAR(momentum_y(driver), -p * kWidth * 0.01, 1e-9 * p * kWidth);
+}
+
+// A quasi-static stage under a held load relaxes (local damping) to equilibrium: the base
+// carries p A; the stage leaves the body at rest with the clock where the stage began.
+TEST(StageDriver, QuasiStaticStageRelaxesToEquilibriumAndEndsAtRest) {
+    mpm::MpmModel<2> m = block({0.2, 0.0});
+    mpm::apply_boundary<2>(m.grid, 1, 0, mpm::BoundaryKind::Roller);
+    std::vector<int> base;
+    for (int n = 0; n < m.grid.num_nodes(); ++n)
+        if (m.grid.ijk(n)[1] == 0) base.push_back(n);
+    StageSpec relax;
+    relax.name = "relax";
+    relax.quasi_static = true;
+    relax.local_damping = 0.7;
+    relax.tolerance = 1e-6;
+    relax.max_steps = 20000;
+    const double p = 20e3;
+    StageDriver<2> driver(m, {relax}, top_pressure(m, p, 0.0, {}), {});
+    driver.add_recorder(std::make_unique<EnergyRecorder<2>>());
+    driver.add_recorder(std::make_unique<ReactionRecorder<2>>(base));
+    driver.run();
+    const Table& h = driver.history();
+    EXPECT_LT(h.data[6].back(), 1e-3) << "unbalanced force ratio";
+    // The roller base pushes up with the load on top (the last step's reaction).
+    double reaction = 0.0;
+    for (int n : base) reaction += m.grid.reaction[2 * n + 1];
+    EXPECT_NEAR(reaction, p * kWidth, 1e-3 * p * kWidth);
+    EXPECT_EQ(driver.solver().time(), 0.0);
+    for (double v : m.particles.v) ASSERT_EQ(v, 0.0);
+}
+
+namespace {
+
+// Keeps the last checkpoint in memory: everything a resumed run needs.
+struct MemoryCheckpoint final : StageObserver<2> {
+    mpm::Particles<2> particles;
+    DriverState state;
+    double time = 0.0, absorbed = 0.0;
+    long steps = 0;
+    Table history;
+    int taken = 0;
+    void checkpoint(const DriverState& s, const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>& solver,
+                    const Table& h) override {
+        particles = m.particles;
+        state = s;
+        time = solver.time();
+        steps = solver.steps();
+        absorbed = solver.absorbed_energy();
+        history = h;
+        ++taken;
+    }
+};
+
+// A column on a roller base under gravity, a roller at x = 0 and an absorbing side at x_max
+// (which the blow's lateral motion does work on).
+mpm::MpmModel<2> column_with_absorbing_side() {
+    mpm::MpmModel<2> m = block({0.0, 0.0}, {4, 16});
+    m.gravity = {0.0, -9.81};
+    mpm::apply_boundary<2>(m.grid, 1, 0, mpm::BoundaryKind::Roller);
+    mpm::apply_boundary<2>(m.grid, 0, 0, mpm::BoundaryKind::Roller);
+    mpm::apply_boundary<2>(m.grid, 0, 1, mpm::BoundaryKind::Absorbing, kDensity, 116.0, 62.0);
+    return m;
+}
+
+std::vector<StageSpec> settle_then_blow() {
+    StageSpec settle;
+    settle.name = "settle";
+    settle.quasi_static = true;
+    settle.local_damping = 0.7;
+    settle.max_steps = 400;
+    settle.tolerance = 1e-12;  // runs all its steps: a stop lands inside it
+    return {settle, dynamic("blow", 0.02)};
+}
+
+void add_recorders(StageDriver<2>& d) {
+    d.add_recorder(std::make_unique<EnergyRecorder<2>>());
+    d.add_recorder(std::make_unique<ProbeRecorder<2>>(std::vector<int>{0, 5}));
+}
+
+// Interrupts with a real SIGINT after `stop_after` steps, resumes in a new model from the
+// checkpoint, and compares the history and final state with an uninterrupted run.
+void check_resume(long stop_after) {
+    mpm::MpmModel<2> whole_model = column_with_absorbing_side();
+    StageDriver<2> whole(whole_model, settle_then_blow(), top_pressure(whole_model, 20e3, 0.005, {1}), {});
+    add_recorders(whole);
+    whole.run();
+
+    mpm::MpmModel<2> first_model = column_with_absorbing_side();
+    MemoryCheckpoint saved;
+    StageDriver<2> first(first_model, settle_then_blow(), top_pressure(first_model, 20e3, 0.005, {1}), {}, &saved);
+    add_recorders(first);
+    ::setenv("PILEMPM_INTERRUPT_AFTER_STEPS", std::to_string(stop_after).c_str(), 1);
+    ::unsetenv("PILEMPM_INTERRUPT_SIGNAL");
+    {
+        const StopRequest stop(true);
+        ASSERT_EQ(first.run(&stop), StageDriver<2>::Outcome::Stopped);
+    }
+    ::unsetenv("PILEMPM_INTERRUPT_AFTER_STEPS");
+    ASSERT_EQ(saved.steps, stop_after);
+
+    // As the job does: the run is built from the case, then the checkpoint's points replace
+    // the fresh ones.
+    mpm::MpmModel<2> resumed_model = column_with_absorbing_side();
+    const auto loads = top_pressure(resumed_model, 20e3, 0.005, {1});
+    resumed_model.particles = saved.particles;
+    StageDriver<2> resumed(resumed_model, settle_then_blow(), loads, {});
+    add_recorders(resumed);
+    resumed.resume(saved.state, saved.time, saved.steps, saved.absorbed, saved.history);
+    ASSERT_EQ(resumed.run(), StageDriver<2>::Outcome::Completed);
+
+    const Table& a = whole.history();
+    const Table& b = resumed.history();
+    ASSERT_EQ(a.rows(), b.rows());
+    for (std::size_t r = 0; r < a.rows(); ++r)
+        for (std::size_t c = 0; c < a.columns.size(); ++c) ASSERT_EQ(a.data[c][r], b.data[c][r]) << a.columns[c] << " row " << r;
+    EXPECT_GT(whole.solver().absorbed_energy(), 0.0);
+    EXPECT_EQ(whole.solver().absorbed_energy(), resumed.solver().absorbed_energy());
+    for (std::size_t i = 0; i < whole_model.particles.x.size(); ++i)
+        ASSERT_EQ(whole_model.particles.x[i], resumed_model.particles.x[i]);
+    for (std::size_t i = 0; i < whole_model.particles.stress.size(); ++i)
+        ASSERT_EQ(whole_model.particles.stress[i], resumed_model.particles.stress[i]);
+}
+
+}  // namespace
+
+TEST(StageDriver, StoppedInAQuasiStaticStageAndResumedEqualsUninterrupted) { check_resume(150); }
+TEST(StageDriver, StoppedInADynamicStageAndResumedEqualsUninterrupted) { check_resume(420); }
