@@ -14,6 +14,7 @@ struct VerificationCheck {
     bool relative = true;        // |c - r| <= tol |r|, else |c - r| <= tol
     bool at_least = false;       // passes when computed >= reference (a coverage check)
     bool within_factor = false;  // passes when reference / tol <= computed <= reference x tol
+    bool informative = false;    // reported beside its reference, without a pass or fail
     bool passed = false;
     std::string note;
 };
@@ -21,5 +22,7 @@ struct VerificationCheck {
 // passed = |computed - reference| <= tolerance (x |reference| when relative), and finite.
 VerificationCheck make_check(std::string name, double computed, double reference, double tolerance, bool relative,
                              std::string note = "");
+// A number reported next to a reference it is not judged against (passed stays true).
+VerificationCheck make_report(std::string name, double computed, double reference, std::string note);
 
 }  // namespace pilempm

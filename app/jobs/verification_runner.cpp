@@ -61,7 +61,8 @@ io::JsonObject verification_json(const io::CaseFile& c, const std::vector<Verifi
         io::JsonObject o;
         o.add("name", k.name).add("computed", k.computed).add("reference", k.reference)
             .add("tolerance", k.tolerance)
-            .add("tolerance_kind", std::string(k.at_least        ? "at_least"
+            .add("tolerance_kind", std::string(k.informative     ? "reported"
+                                              : k.at_least      ? "at_least"
                                               : k.within_factor ? "factor"
                                               : k.relative      ? "relative"
                                                                 : "absolute"))

@@ -78,6 +78,8 @@ struct MpmCase : CaseFile {
     std::vector<std::array<double, 3>> probes;  // points whose nearest material point is recorded
     std::vector<std::string> verification_checks;
     std::map<std::string, double> verification;  // parameters of the checks
+    std::vector<double> grid_sequence;           // refinement factors the checks are rerun at
+    std::vector<std::string> converging;         // checks whose errors must converge on them
 };
 
 MpmCase read_mpm_case(const std::string& file);

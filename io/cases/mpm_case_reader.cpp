@@ -10,7 +10,7 @@ namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
                                           "absorbed_energy", "footing_collapse", "granular_runout",
-                                          "stress_noise", "k0_ratio"};
+                                          "stress_noise", "lateral_stress_ratio", "nil_step_displacement"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
     const auto v = m.numbers(key, {"a coordinate in m", [](double) { return true; }});
@@ -205,10 +205,31 @@ MpmCase read_mpm_case(const std::string& file) {
     if (auto v = root.optional_map("verification")) {
         c.verification_checks = v->words("checks", kChecks);
         for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
-                                "footing_width", "reference", "initial_width", "height"})
+                                "footing_width", "reference", "initial_width", "height", "noise_bound",
+                                "min_order"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
+        // The case rerun on other grids (cells x factor along every axis): each check must
+        // hold on every grid, and the errors are reported side by side.
+        if (v->has("grid_sequence")) {
+            c.grid_sequence = v->numbers("grid_sequence", positive("refinement factors of the cells"));
+            for (double f : c.grid_sequence)
+                for (int d = 0; d < c.dimension; ++d) {
+                    const double n = f * c.cells[d];
+                    if (std::abs(n - std::round(n)) > 1e-9 || std::round(n) < 1)
+                        v->fail("grid_sequence", "factors that give whole numbers of cells (" +
+                                                     std::to_string(c.cells[d]) + " along axis " + std::to_string(d) +
+                                                     ")", std::to_string(f));
+                }
+        }
+        // The errors (names as in verification.json) whose order of convergence is checked.
+        if (v->has("converging")) {
+            if (c.grid_sequence.empty()) v->fail("converging", "a grid_sequence to converge on", "none");
+            const YAML::Node list = v->raw("converging");
+            if (!list.IsSequence()) v->fail("converging", "a list of check names", describe(list));
+            for (std::size_t i = 0; i < list.size(); ++i) c.converging.push_back(list[i].as<std::string>());
+        }
         v->finish();
     }
     root.finish();

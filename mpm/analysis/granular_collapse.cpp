@@ -45,6 +45,17 @@ double lube_runout(double a, bool axisymmetric) {
     return 1.2 * 1.8 + (a - 1.8) / (2.8 - 1.8) * (tall(2.8) - 1.2 * 1.8);
 }
 
+double lube_final_height(double a, bool axisymmetric) {
+    if (axisymmetric) return a < 0.7 ? a : 0.88 * std::pow(a, 1.0 / 6.0);
+    return a < 1.15 ? a : std::pow(a, 0.4);
+}
+
+double deposit_height(const std::vector<double>& profile) {
+    double h = 0.0;
+    for (double t : profile) h = std::max(h, t);
+    return h;
+}
+
 template double deposit_front<2>(const mpm::MpmModel<2>&);
 template double deposit_front<3>(const mpm::MpmModel<3>&);
 

@@ -29,4 +29,12 @@ double thickness_front(const mpm::MpmModel<2>& m, const std::vector<double>& pro
 // Mech. 508, 175-199), L_0 the radius: 1.24 a for a < 1.7, 1.6 a^(1/2) above.
 double lube_runout(double aspect_ratio, bool axisymmetric);
 
+// Final height of the deposit H_inf / L_0 (its highest point, at the wall or the axis), after
+// Lube et al. Plane strain (2005): a for a < 1.15 (the top is left undisturbed), a^(2/5)
+// above. Axisymmetric (2004), L_0 the radius: a for a < 0.7, 0.88 a^(1/6) above.
+double lube_final_height(double aspect_ratio, bool axisymmetric);
+
+// Highest thickness of a 2D deposit profile (deposit_profile), m.
+double deposit_height(const std::vector<double>& profile);
+
 }  // namespace pilempm::mpm

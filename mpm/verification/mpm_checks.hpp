@@ -13,21 +13,20 @@
 namespace pilempm::mpm {
 
 // What the checks read besides the model: the case's check names and parameters
-// (verification.* keys), gravity and the first material's density.
+// (verification.* keys), gravity and the first material's density, model and Poisson's
+// ratio.
 struct MpmCheckContext {
     std::vector<std::string> checks;
     std::map<std::string, double> parameters;
     double gravity = 0.0;  // m/s^2, magnitude
     double density = 0.0;  // kg/m^3
+    std::string model;     // linear_elastic, mohr_coulomb, ...
+    double poisson_ratio = 0.0;
 };
 
 template <int D>
 std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, const MpmModel<D>& m,
                                                     const std::vector<double>& x0, const Table& history);
 
-// RMS of (sigma_v - rho g z) / (rho g H) over the points: the stress noise of a column
-// under its weight (verification.surface gives the top).
-template <int D>
-double stress_noise(const MpmCheckContext& c, const MpmModel<D>& m, const std::vector<double>& x0);
 
 }  // namespace pilempm::mpm
