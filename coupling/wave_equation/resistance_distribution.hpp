@@ -16,7 +16,7 @@ struct ResistanceDistribution {
     std::vector<double> shaft_damping;
 
     double shaft_per_metre_at(double d) const;  // linear between samples, 0 outside
-    double shaft_damping_at(double d, double fallback) const;  // nearest sample
+    double shaft_damping_at(double d, double fallback) const;  // first sample at or below d
     double shaft_between(double d0, double d1) const;  // N, exact for the linear samples
     double shaft_total() const { return shaft_between(0.0, penetration); }
     double total() const { return shaft_total() + toe; }
