@@ -31,9 +31,8 @@ double layer_shaft_damping(const DrivabilitySetup& s, const SoilLayer& l) {
 }
 
 // Smith-viscous shaft damping by soil type (Case damping has one J_c and needs none). A
-// sample's J serves the shaft between it and the sample above (shaft_damping_at takes the
-// first sample at or below a depth), so it is that stretch's layer, read at its middle: a
-// sample on a boundary then keeps the layer above.
+// sample's J serves the shaft between it and the sample above, so it is that stretch's
+// layer, read at its middle: a sample on a boundary then keeps the layer above.
 void assign_shaft_damping(const DrivabilitySetup& s, ResistanceDistribution& r) {
     if (s.smith.law != DampingLaw::SmithViscous) return;
     r.shaft_damping.resize(r.depth.size());

@@ -67,9 +67,10 @@ TEST(BearingGraph, ShaftDashpotIsTheLayersJTimesTheNodesResistance) {
     fem::ExplicitPile pile(s.mesh, s.steel, {});
     const SmithSoil soil = make_smith_soil(pile, bearing_graph_resistance(s, 3e6), s.smith, 1.0);
     // By hand: 0.6 x 3 MN spread evenly over 15.25 m; a node carries the shaft within half
-    // an element (0.5 m) of it, cut at the mudline and the tip; dashpot c = J R_u with the J
-    // of the layer the node is in.
+    // an element (0.5 m) of it, cut at the mudline and the tip; its dashpot is the sum of
+    // J R_u over that shaft, J = 0.2 s/m above 6 m and 0.9 s/m below.
     const double per_metre = 0.6 * 3e6 / kPenetration;
+    auto overlap = [](double a, double b, double lo, double hi) { return std::max(0.0, std::min(b, hi) - std::max(a, lo)); };
     int shaft_points = 0;
     for (std::size_t i = 0; i < soil.size(); ++i) {
         const double depth = kPenetration - pile.mesh().z(soil.node[i]);
@@ -78,10 +79,11 @@ TEST(BearingGraph, ShaftDashpotIsTheLayersJTimesTheNodesResistance) {
             continue;
         }
         ++shaft_points;
-        const double r_u = per_metre * (std::min(kPenetration, depth + 0.5) - std::max(0.0, depth - 0.5));
-        const double j = depth < kBoundary ? 0.2 : 0.9;
+        const double sand = overlap(depth - 0.5, depth + 0.5, 0.0, kBoundary);
+        const double clay = overlap(depth - 0.5, depth + 0.5, kBoundary, kPenetration);
+        const double r_u = per_metre * (sand + clay);
         EXPECT_NEAR(soil.ultimate[i], r_u, 1e-9 * r_u) << "node at " << depth << " m";
-        EXPECT_NEAR(soil.dashpot[i], j * r_u, 1e-9 * r_u) << "node at " << depth << " m";
+        EXPECT_NEAR(soil.dashpot[i], per_metre * (0.2 * sand + 0.9 * clay), 1e-9 * r_u) << "node at " << depth << " m";
     }
     EXPECT_EQ(shaft_points, 16);  // nodes at 0.25, 1.25, ..., 15.25 m
 }
@@ -101,23 +103,29 @@ TEST(BearingGraph, BlowCountFollowsTheClayShaftDamping) {
     EXPECT_EQ(bearing_blow_count(sand), before);
 }
 
-TEST(SrdForDriving, NodeJustAboveALayerBoundaryTakesItsOwnLayersDamping) {
-    // 0.5 m elements and the tip at 15.45 m put a node at 5.95 m, 0.05 m above the
-    // boundary: inside one SRD sample spacing (0.1 m), in sand.
+TEST(SrdForDriving, ANodeOnALayerBoundarySumsTheDashpotsOfBothLayers) {
+    // 0.5 m elements: the tip at 15.45 m puts a node at 5.95 m, 0.05 m above the boundary
+    // (inside one SRD sample spacing, 0.1 m); at 15.5 m one sits on it. Each carries
+    // shaft from both layers: c = J_sand R_u,sand + J_clay R_u,clay.
     auto s = sand_over_clay();
     s.mesh = fem::mesh_rod(fem::make_pile_geometry({{30.0, 1.5, 0.025}}), 0.5);
     s.sand_shaft_damping = 0.2;
     s.clay_shaft_damping = 0.9;
-    const double pen = 15.45;
-    fem::ExplicitPile pile(s.mesh, s.steel, {});
-    const SmithSoil soil = make_smith_soil(pile, srd_for_driving(s, s.cases[0], pen), s.smith, 1.0);
-    bool saw_the_node = false;
-    for (std::size_t i = 0; i < soil.size(); ++i) {
-        if (soil.toe[i]) continue;
-        const double depth = pen - pile.mesh().z(soil.node[i]);
-        saw_the_node |= std::abs(depth - 5.95) < 1e-9;
-        EXPECT_NEAR(soil.dashpot[i] / soil.ultimate[i], depth < kBoundary ? 0.2 : 0.9, 1e-12)
-            << "node at " << depth << " m";
+    for (double pen : {15.45, 15.5}) {
+        const ResistanceDistribution r = srd_for_driving(s, s.cases[0], pen);
+        fem::ExplicitPile pile(s.mesh, s.steel, {});
+        const SmithSoil soil = make_smith_soil(pile, r, s.smith, 1.0);
+        int straddling = 0;
+        for (std::size_t i = 0; i < soil.size(); ++i) {
+            if (soil.toe[i]) continue;
+            const double depth = pen - pile.mesh().z(soil.node[i]);
+            const double lo = std::max(0.0, depth - 0.25), hi = std::min(pen, depth + 0.25);
+            const double sand = r.shaft_between(lo, std::min(hi, kBoundary));
+            const double clay = r.shaft_between(std::max(lo, kBoundary), hi);
+            straddling += sand > 0.0 && clay > 0.0;
+            EXPECT_NEAR(soil.dashpot[i], 0.2 * sand + 0.9 * clay, 1e-9 * soil.ultimate[i])
+                << "node at " << depth << " m, tip at " << pen << " m";
+        }
+        EXPECT_EQ(straddling, 1) << "tip at " << pen << " m";
     }
-    EXPECT_TRUE(saw_the_node);
 }
