@@ -24,15 +24,50 @@ double self_weight_penetration(const SoilProfile& soil, SrdMethod method, const 
     return 0.5 * (lo + hi);
 }
 
+namespace {
+
+double layer_shaft_damping(const DrivabilitySetup& s, const SoilLayer& l) {
+    return l.type == SoilType::Sand ? s.sand_shaft_damping : s.clay_shaft_damping;
+}
+
+// Smith-viscous shaft damping by soil type (Case damping has one J_c and needs none). A
+// sample's J serves the shaft between it and the sample above, so it is that stretch's
+// layer, read at its middle: a sample on a boundary then keeps the layer above.
+void assign_shaft_damping(const DrivabilitySetup& s, ResistanceDistribution& r) {
+    if (s.smith.law != DampingLaw::SmithViscous) return;
+    r.shaft_damping.resize(r.depth.size());
+    for (std::size_t i = 0; i < r.depth.size(); ++i) {
+        const double z = i == 0 ? r.depth[0] : 0.5 * (r.depth[i - 1] + r.depth[i]);
+        r.shaft_damping[i] = layer_shaft_damping(s, s.soil.layer_at(z));
+    }
+}
+
+}  // namespace
+
 ResistanceDistribution srd_for_driving(const DrivabilitySetup& s, const SoilCase& c, double penetration) {
     ResistanceDistribution r = compute_srd(s.soil, c.method, s.coefficients, s.outer_diameter,
                                            s.wall_thickness, penetration, s.srd_spacing, c.factor);
-    if (s.smith.law == DampingLaw::SmithViscous) {
-        r.shaft_damping.resize(r.depth.size());
-        for (std::size_t i = 0; i < r.depth.size(); ++i)
-            r.shaft_damping[i] = s.soil.layer_at(r.depth[i]).type == SoilType::Sand ? s.sand_shaft_damping
-                                                                                     : s.clay_shaft_damping;
+    assign_shaft_damping(s, r);
+    return r;
+}
+
+ResistanceDistribution bearing_graph_resistance(const DrivabilitySetup& s, double r_u) {
+    ResistanceDistribution r;
+    r.penetration = s.bearing_penetration > 0.0 ? s.bearing_penetration : s.final_depth;
+    // Uniform shaft, sampled at the mudline, the tip and each boundary where the damping
+    // changes, so every stretch of the shaft takes its own layer's J.
+    r.depth = {0.0};
+    const auto& layers = s.soil.layers;
+    for (std::size_t i = 0; i + 1 < layers.size(); ++i) {
+        const double b = layers[i].bottom;
+        if (s.smith.law == DampingLaw::SmithViscous && b < r.penetration &&
+            layer_shaft_damping(s, layers[i]) != layer_shaft_damping(s, layers[i + 1]))
+            r.depth.push_back(b);
     }
+    r.depth.push_back(r.penetration);
+    r.shaft.assign(r.depth.size(), r_u * s.bearing_shaft_fraction / r.penetration);
+    r.toe = r_u * (1.0 - s.bearing_shaft_fraction);
+    assign_shaft_damping(s, r);
     return r;
 }
 
@@ -173,20 +208,14 @@ DrivabilityResult run_drivability(const DrivabilitySetup& s, const DrivabilityPr
     if (!s.bearing_resistances.empty()) {
         Table bg("bearing_graph", {"energy_level", "ultimate_resistance_N", "set_per_blow_m", "blows_per_0.25m",
                                    "max_compression_Pa", "max_tension_Pa", "enthru_J"});
-        const double pen = s.bearing_penetration > 0.0 ? s.bearing_penetration : s.final_depth;
         std::vector<PenetrationResult> graph(s.energy_levels.size() * s.bearing_resistances.size());
         const long n = static_cast<long>(graph.size());
 #pragma omp parallel for schedule(dynamic, 1)
         for (long k = 0; k < n; ++k) {
             const double level = s.energy_levels[k / s.bearing_resistances.size()];
             const double r_u = s.bearing_resistances[k % s.bearing_resistances.size()];
-            ResistanceDistribution r;
-            r.penetration = pen;
-            r.depth = {0.0, pen};
-            r.shaft = {r_u * s.bearing_shaft_fraction / pen, r_u * s.bearing_shaft_fraction / pen};
-            r.toe = r_u * (1.0 - s.bearing_shaft_fraction);
-            graph[k] = drive_at_penetration(s.mesh, s.steel, r, s.smith, scaled_hammer(s.hammer, level),
-                                            s.ram_element_size, s.driving);
+            graph[k] = drive_at_penetration(s.mesh, s.steel, bearing_graph_resistance(s, r_u), s.smith,
+                                            scaled_hammer(s.hammer, level), s.ram_element_size, s.driving);
         }
         for (long k = 0; k < n; ++k) {
             const auto& p = graph[k];

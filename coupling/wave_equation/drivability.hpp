@@ -77,6 +77,10 @@ double self_weight_penetration(const SoilProfile& soil, SrdMethod method, const 
 // SRD sampled for the Smith soil, with the shaft damping of each layer's soil type.
 ResistanceDistribution srd_for_driving(const DrivabilitySetup& s, const SoilCase& c, double penetration);
 
+// Bearing-graph soil: `r_u` (N) on a uniform shaft (bearing_shaft_fraction) and the toe at
+// the bearing-graph penetration, with the shaft damping of each layer's soil type.
+ResistanceDistribution bearing_graph_resistance(const DrivabilitySetup& s, double r_u);
+
 // Hammer with its energy scaled by `level` (impact velocity or pulse force x sqrt(level)).
 fem::HammerSpec scaled_hammer(const fem::HammerSpec& h, double level);
 

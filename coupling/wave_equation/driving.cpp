@@ -45,8 +45,11 @@ SmithSoil make_smith_soil(const fem::ExplicitPile& pile, const ResistanceDistrib
         const double hi = i + 1 == nn ? L : 0.5 * (z + mesh.z(i + 1));
         if (lo >= pen) break;
         const double r_u = r.shaft_between(pen - hi, pen - lo);  // depth = pen - z
-        const double j = r.shaft_damping_at(std::max(0.0, pen - z), p.shaft_damping);
-        if (r_u > 0.0) soil.add_point(i, r_u, p.shaft_quake, dashpot(r_u, j), false);
+        // Smith: the dashpots of the soil the node carries, each layer with its own J.
+        const double c = p.law == DampingLaw::SmithViscous
+                             ? r.shaft_dashpot_between(pen - hi, pen - lo, p.shaft_damping)
+                             : dashpot(r_u, p.shaft_damping);
+        if (r_u > 0.0) soil.add_point(i, r_u, p.shaft_quake, c, false);
     }
     if (r.toe > 0.0) soil.add_point(0, r.toe, p.toe_quake, dashpot(r.toe, p.toe_damping), true);
     return soil;

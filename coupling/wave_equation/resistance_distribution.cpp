@@ -14,11 +14,20 @@ double ResistanceDistribution::shaft_per_metre_at(double d) const {
     return (1.0 - w) * shaft[i - 1] + w * shaft[i];
 }
 
-double ResistanceDistribution::shaft_damping_at(double d, double fallback) const {
-    if (shaft_damping.size() != depth.size() || depth.empty()) return fallback;
-    const auto it = std::lower_bound(depth.begin(), depth.end(), d);
-    const std::size_t i = it == depth.end() ? depth.size() - 1 : static_cast<std::size_t>(it - depth.begin());
-    return shaft_damping[i];
+double ResistanceDistribution::shaft_dashpot_between(double d0, double d1, double fallback) const {
+    if (shaft_damping.size() != depth.size() || depth.empty()) return fallback * shaft_between(d0, d1);
+    // Runs of equal J are taken whole, so a uniform J gives exactly J x shaft_between.
+    double c = 0.0;
+    for (double a = d0; a < d1;) {
+        std::size_t k = static_cast<std::size_t>(std::upper_bound(depth.begin(), depth.end(), a) - depth.begin());
+        k = std::min(k, depth.size() - 1);
+        const double j = shaft_damping[k];
+        while (k + 1 < depth.size() && shaft_damping[k + 1] == j) ++k;
+        const double b = k + 1 < depth.size() ? std::min(d1, depth[k]) : d1;
+        c += j * shaft_between(a, b);
+        a = b;
+    }
+    return c;
 }
 
 double ResistanceDistribution::shaft_between(double d0, double d1) const {

@@ -46,6 +46,19 @@ TEST(ResistanceDistribution, IntegratesLinearSamplesExactly) {
     EXPECT_NEAR(r.shaft_between(5.0, 10.0), 5.0 * (35e3 + 50e3) / 2.0, 1e-6);
 }
 
+TEST(ResistanceDistribution, DashpotSumsJTimesResistanceStretchByStretch) {
+    // 20 + 3 d kN/m; J = 0.1 s/m down to 8 m, 0.5 s/m below. From 5 to 10 m by hand:
+    // 0.1 x (60 + 1.5 (64 - 25)) kN + 0.5 x (40 + 1.5 (100 - 64)) kN = 11.85 + 47 kN s/m.
+    ResistanceDistribution r;
+    r.penetration = 20.0;
+    r.depth = {0.0, 8.0, 20.0};
+    r.shaft = {20e3, 44e3, 80e3};
+    r.shaft_damping = {0.1, 0.1, 0.5};
+    EXPECT_NEAR(r.shaft_dashpot_between(5.0, 10.0, 9.9), 58.85e3, 1e-6);
+    r.shaft_damping = {0.3, 0.3, 0.3};  // one J: exactly J x R_u, as without samples
+    EXPECT_EQ(r.shaft_dashpot_between(5.0, 10.0, 9.9), 0.3 * r.shaft_between(5.0, 10.0));
+}
+
 TEST(SmithSoil, CarriesTheWholeDistribution) {
     fem::ExplicitPile pile(pile_mesh(), kSteel, {});
     const auto r = linear_srd(1.0);
