@@ -31,7 +31,8 @@ template <int D>
 std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::MpmCheckContext& context,
                                               double factor, std::string& grid) {
     io::MpmCase refined = c;
-    for (int d = 0; d < D; ++d) refined.cells[d] = static_cast<int>(std::lround(c.cells[d] * factor));
+    for (int d = 0; d < D; ++d)
+        if (c.refined_axes[d]) refined.cells[d] = static_cast<int>(std::lround(c.cells[d] * factor));
     grid = std::to_string(refined.cells[0]);
     for (int d = 1; d < D; ++d) grid.append("x").append(std::to_string(refined.cells[d]));
     io::MpmRun<D> run = io::build_mpm_run<D>(refined);
@@ -94,8 +95,8 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         if (restored.case_fingerprint != fingerprint(c))
             throw std::runtime_error("the checkpoint in " + staged.incomplete_path().string() + " belongs to another case");
         if (!quiet)
-            std::fprintf(stderr, "resuming at stage %d, t = %g s, step %ld\n", restored.driver.stage + 1, restored.time,
-                         restored.steps);
+            std::fprintf(stderr, "resuming at stage %d, t = %g s, step %ld\n", restored.driver.stage + 1,
+                         restored.solver.time, restored.solver.steps);
     }
     io::MpmRunOutput<D> output(staged, io::state_names(m), fingerprint(c), quiet);
     coupling::StageDriver<D> driver(m, run.stages, run.loads, run.settings, &output);
@@ -104,7 +105,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points));
     if (resume) {
         output.adopt_snapshots(restored.snapshot_times);
-        driver.resume(restored.driver, restored.time, restored.steps, restored.absorbed_energy, restored.history);
+        driver.resume(restored.driver, restored.solver, restored.history);
     }
     const coupling::StopRequest stop(!resume);
     if (driver.run(&stop) == coupling::StageDriver<D>::Outcome::Stopped) {
@@ -114,7 +115,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     }
     const auto& solver = driver.solver();
     const Table& history = driver.history();
-    const long resumed_steps = resume ? restored.steps : 0;
+    const long resumed_steps = resume ? restored.solver.steps : 0;
     output.finish();
     io::write_csv(staged.path() / "history.csv", history);
     if constexpr (D == 2) {

@@ -13,7 +13,8 @@ double elastic_energy(const mpm::Particles<D>& p) {
 template <int D>
 void EnergyRecorder<D>::add_columns(std::vector<std::string>& columns) const {
     columns.insert(columns.end(),
-                   {"kinetic_energy_J", "elastic_energy_J", "absorbed_energy_J", "unbalanced_force_ratio"});
+                   {"kinetic_energy_J", "elastic_energy_J", "absorbed_energy_J", "unbalanced_force_ratio",
+                    "external_work_J"});
 }
 
 template <int D>
@@ -23,6 +24,7 @@ void EnergyRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D
     row.push_back(elastic_energy(m.particles));
     row.push_back(solver.absorbed_energy());
     row.push_back(solver.unbalanced_force_ratio());
+    row.push_back(solver.external_work());
 }
 
 template <int D>
@@ -45,6 +47,7 @@ void ProbeRecorder<D>::add_columns(std::vector<std::string>& columns) const {
     for (std::size_t k = 0; k < points_.size(); ++k) {
         columns.push_back("probe" + std::to_string(k) + "_velocity_vertical_m_s");
         columns.push_back("probe" + std::to_string(k) + "_stress_vertical_Pa");
+        columns.push_back("probe" + std::to_string(k) + "_velocity_x_m_s");
     }
 }
 
@@ -53,6 +56,7 @@ void ProbeRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>
     for (int p : points_) {
         row.push_back(m.particles.v[D * p + D - 1]);
         row.push_back(m.particles.stress[6 * p + (D == 2 ? 1 : 2)]);
+        row.push_back(m.particles.v[D * p]);
     }
 }
 

@@ -18,8 +18,8 @@ public:
     virtual void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const = 0;
 };
 
-// Kinetic and elastic energy, the energy the absorbing boundaries took out, and the
-// unbalanced force ratio of the last step.
+// Kinetic and elastic energy, the energy the absorbing boundaries took out, the unbalanced
+// force ratio of the last step, and the work the external forces did.
 template <int D>
 class EnergyRecorder final : public Recorder<D> {
 public:
@@ -39,7 +39,7 @@ private:
     std::vector<int> nodes_;
 };
 
-// Vertical velocity and vertical stress of given material points (probes).
+// Vertical velocity, vertical stress and horizontal (x) velocity of given material points.
 template <int D>
 class ProbeRecorder final : public Recorder<D> {
 public:

@@ -1,6 +1,8 @@
 #include "coupling/driver/stage.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace pilempm::coupling {
 
@@ -8,10 +10,11 @@ bool StageLoad::acts_in(int stage) const {
     return stages.empty() || std::find(stages.begin(), stages.end(), stage) != stages.end();
 }
 
-bool StageLoad::active(int stage, bool quasi_static, double time_in_stage) const {
-    if (!acts_in(stage)) return false;
-    if (duration <= 0.0) return true;
-    return !quasi_static && time_in_stage < duration;
+double StageLoad::factor(int stage, bool quasi_static, double time_in_stage) const {
+    if (!acts_in(stage)) return 0.0;
+    if (duration <= 0.0) return 1.0;
+    if (quasi_static || time_in_stage >= duration) return 0.0;
+    return shape == PulseShape::HalfSine ? std::sin(std::numbers::pi * time_in_stage / duration) : 1.0;
 }
 
 }  // namespace pilempm::coupling

@@ -19,15 +19,20 @@ struct StageSpec {
     double local_damping = 0.0;  // Cundall's alpha
 };
 
+// The time shape of a pulse: constant over its duration, or p sin(pi t / T), whose smooth
+// rise carries little energy at the grid's cut-off wavelengths.
+enum class PulseShape { Rectangular, HalfSine };
+
 // A force on the face of a material point (from a pressure) and when it acts.
 struct StageLoad {
     mpm::SurfaceLoad load;
     double duration = 0.0;     // s; 0: held for the whole stage, else a pulse from the stage start
+    PulseShape shape = PulseShape::Rectangular;
     std::vector<int> stages;   // indices of the stages it acts in; empty: every stage
     bool acts_in(int stage) const;
-    // Held loads act in quasi-static stages; pulses only in dynamic ones, for `duration`
-    // after the stage's start.
-    bool active(int stage, bool quasi_static, double time_in_stage) const;
+    // The share of the force acting (0 when off). Held loads act in quasi-static stages;
+    // pulses only in dynamic ones, for `duration` after the stage's start.
+    double factor(int stage, bool quasi_static, double time_in_stage) const;
 };
 
 }  // namespace pilempm::coupling

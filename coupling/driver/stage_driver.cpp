@@ -29,12 +29,11 @@ void StageDriver<D>::add_recorder(std::unique_ptr<Recorder<D>> recorder) {
 }
 
 template <int D>
-void StageDriver<D>::resume(const DriverState& state, double time, long steps, double absorbed_energy, Table history) {
+void StageDriver<D>::resume(const DriverState& state, const mpm::SolverState& solver, Table history) {
     if (history.columns != history_.columns)
         throw std::runtime_error("the checkpoint's history has other columns than this run records");
     state_ = state;
-    solver_.set_time(time, steps);
-    solver_.set_absorbed_energy(absorbed_energy);
+    solver_.restore(solver);
     history_ = std::move(history);
 }
 
@@ -42,8 +41,13 @@ template <int D>
 void StageDriver<D>::apply_loads(bool quasi_static, double time_in_stage) {
     auto& active = m_.surface_loads;
     active.clear();
-    for (const auto& l : loads_)
-        if (l.active(state_.stage, quasi_static, time_in_stage)) active.push_back(l.load);
+    for (const auto& l : loads_) {
+        const double f = l.factor(state_.stage, quasi_static, time_in_stage);
+        if (f == 0.0) continue;
+        active.push_back(l.load);
+        if (f != 1.0)
+            for (double& x : active.back().force) x *= f;
+    }
 }
 
 template <int D>

@@ -65,8 +65,8 @@ public:
     void add_recorder(std::unique_ptr<Recorder<D>> recorder);
 
     // A run resumed from a checkpoint: the particles are already in the model; this brings
-    // back the driver's state, the solver's clock and absorbed energy, and the history.
-    void resume(const DriverState& state, double time, long steps, double absorbed_energy, Table history);
+    // back the driver's state, the solver's clock and energy ledger, and the history.
+    void resume(const DriverState& state, const mpm::SolverState& solver, Table history);
 
     // Runs the stages left; Stopped when `stop` asked for it (a checkpoint has been taken).
     Outcome run(const StopRequest* stop = nullptr);

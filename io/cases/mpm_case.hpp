@@ -36,7 +36,9 @@ struct MpmPressureInput {  // on the points in a box: force = -pressure n x face
     int normal_axis = 1;
     double normal_sign = 1.0;
     double pressure = 0.0;          // Pa, compression positive
+    std::array<double, 3> traction{};  // Pa, added to -pressure n (a shear load: along the face)
     double duration = 0.0;          // s; 0: held (a step), else a pulse from each stage's start
+    bool half_sine = false;         // the pulse's shape: p sin(pi t / duration), else constant
     std::vector<int> stages;        // the stages it acts in (indices); empty: all
 };
 
@@ -79,6 +81,7 @@ struct MpmCase : CaseFile {
     std::vector<std::string> verification_checks;
     std::map<std::string, double> verification;  // parameters of the checks
     std::vector<double> grid_sequence;           // refinement factors the checks are rerun at
+    std::array<bool, 3> refined_axes{true, true, true};  // the axes the sequence refines
     std::vector<std::string> converging;         // checks whose errors must converge on them
 };
 

@@ -10,7 +10,8 @@ namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
                                           "absorbed_energy", "footing_collapse", "granular_runout",
-                                          "stress_noise", "lateral_stress_ratio", "nil_step_displacement"};
+                                          "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
+                                          "shear_wave_arrival"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
     const auto v = m.numbers(key, {"a coordinate in m", [](double) { return true; }});
@@ -158,8 +159,20 @@ MpmCase read_mpm_case(const std::string& file) {
             const auto [axis, side] = plane(m, "face", c.dimension);
             p.normal_axis = axis;
             p.normal_sign = side == 1 ? 1.0 : -1.0;  // outward normal of the loaded face
-            p.pressure = m.number("pressure", {"a pressure in Pa", [](double) { return true; }});
+            const bool traction = m.has("traction");
+            if (traction) {
+                const auto t = m.numbers("traction", {"a traction in Pa", [](double) { return true; }});
+                if (static_cast<int>(t.size()) != c.dimension)
+                    m.fail("traction", std::to_string(c.dimension) + " components", std::to_string(t.size()));
+                for (int d = 0; d < c.dimension; ++d) p.traction[d] = t[d];
+            }
+            const Expect pa{"a pressure in Pa", [](double) { return true; }};
+            p.pressure = traction ? m.number_or("pressure", 0.0, pa) : m.number("pressure", pa);
             p.duration = m.number_or("duration", 0.0, non_negative("pulse duration in s"));
+            if (m.has("pulse")) {
+                if (p.duration <= 0.0) m.fail("pulse", "a duration > 0 for a pulse shape", "a held load");
+                p.half_sine = m.choice("pulse", {"rectangular", "half_sine"}) == "half_sine";
+            }
             if (m.has("stages"))
                 for (const auto& name : m.words("stages", stage_names))
                     for (std::size_t k = 0; k < c.stages.size(); ++k)
@@ -206,7 +219,7 @@ MpmCase read_mpm_case(const std::string& file) {
         c.verification_checks = v->words("checks", kChecks);
         for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
                                 "footing_width", "reference", "initial_width", "height", "noise_bound",
-                                "min_order"})
+                                "min_order", "absorbed_share"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
@@ -214,8 +227,15 @@ MpmCase read_mpm_case(const std::string& file) {
         // hold on every grid, and the errors are reported side by side.
         if (v->has("grid_sequence")) {
             c.grid_sequence = v->numbers("grid_sequence", positive("refinement factors of the cells"));
+            // A one-dimensional case need not be refined across: grid_sequence_axes: [y].
+            if (v->has("grid_sequence_axes")) {
+                const auto axes = v->words("grid_sequence_axes", {"x", "y", "z"});
+                c.refined_axes = {false, false, false};
+                for (const auto& a : axes) c.refined_axes[a[0] - 'x'] = true;
+            }
             for (double f : c.grid_sequence)
                 for (int d = 0; d < c.dimension; ++d) {
+                    if (!c.refined_axes[d]) continue;
                     const double n = f * c.cells[d];
                     if (std::abs(n - std::round(n)) > 1e-9 || std::round(n) < 1)
                         v->fail("grid_sequence", "factors that give whole numbers of cells (" +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace pilempm::io {
@@ -25,6 +26,27 @@ bool in_box(const MpmBox& b, const double* x) {
     for (int d = 0; d < D; ++d)
         if (x[d] < b.min[d] - 1e-12 || x[d] > b.max[d] + 1e-12) return false;
     return true;
+}
+
+// The points a pressure loads: in its box, of each column of points along the face's normal
+// only the outermost (the material's face). A box deeper than a row of points (any box, on a
+// fine enough grid) would otherwise apply the full pressure once per row.
+template <int D>
+std::vector<int> face_points(const mpm::Particles<D>& p, const MpmPressureInput& pr) {
+    std::map<std::array<long long, D - 1>, int> outermost;  // lateral position (nm) -> point
+    const int a = pr.normal_axis;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!in_box<D>(pr.box, &p.x[D * i])) continue;
+        std::array<long long, D - 1> lateral{};
+        for (int d = 0, k = 0; d < D; ++d)
+            if (d != a) lateral[k++] = std::llround(p.x[D * i + d] * 1e9);
+        const auto [it, fresh] = outermost.emplace(lateral, static_cast<int>(i));
+        if (!fresh && pr.normal_sign * (p.x[D * i + a] - p.x[D * it->second + a]) > 0.0) it->second = static_cast<int>(i);
+    }
+    std::vector<int> points;
+    for (const auto& [lateral, i] : outermost) points.push_back(i);
+    std::sort(points.begin(), points.end());
+    return points;
 }
 
 }  // namespace
@@ -74,8 +96,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
     }
     auto& p = m.particles;
     for (const auto& pr : c.pressures)
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            if (!in_box<D>(pr.box, &p.x[D * i])) continue;
+        for (const int i : face_points<D>(p, pr)) {
             double area = 1.0;
             for (int d = 0; d < D; ++d)
                 if (d != pr.normal_axis) area *= p.domain0[D * D * i + D * d + d];
@@ -83,12 +104,14 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             // not its centre, when the face is normal to r).
             if (c.axisymmetric)
                 area *= p.x[D * i] + (pr.normal_axis == 0 ? 0.5 * pr.normal_sign * p.domain0[0] : 0.0);
-            // A pressure's force on each loaded point: -p n x the point's face area on that face.
+            // The force on each loaded point: (traction - p n) x the point's face area.
             coupling::StageLoad load;
             load.duration = pr.duration;
+            load.shape = pr.half_sine ? coupling::PulseShape::HalfSine : coupling::PulseShape::Rectangular;
             load.stages = pr.stages;
-            load.load.point = static_cast<int>(i);
-            load.load.force[pr.normal_axis] = -pr.pressure * pr.normal_sign * area;
+            load.load.point = i;
+            for (int d = 0; d < D; ++d) load.load.force[d] = pr.traction[d] * area;
+            load.load.force[pr.normal_axis] -= pr.pressure * pr.normal_sign * area;
             load.load.offset[pr.normal_axis] = 0.5 * pr.normal_sign * p.domain0[D * D * i + D * pr.normal_axis + pr.normal_axis];
             run.loads.push_back(load);
         }

@@ -16,12 +16,13 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
         {"stage_steps", static_cast<double>(s.stage_steps)},
         {"next_snapshot", s.next_snapshot},
         {"initial_snapshot_written", s.initial_snapshot_written ? 1.0 : 0.0},
-        {"absorbed_energy", run.absorbed_energy},
+        {"absorbed_energy", run.solver.absorbed_energy},
+        {"external_work", run.solver.external_work},
     };
     CheckpointExtras extras;
     extras.arrays.emplace_back("snapshot_times", run.snapshot_times);
     extras.tables.push_back(run.history);
-    write_checkpoint<D>(file, p, run.time, run.steps, scalars, run.case_fingerprint, extras);
+    write_checkpoint<D>(file, p, run.solver.time, run.solver.steps, scalars, run.case_fingerprint, extras);
 }
 
 template <int D>
@@ -34,8 +35,8 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
                                  " (written by an older pilempm?)");
     };
     RunCheckpoint run;
-    run.time = info.time;
-    run.steps = info.step;
+    run.solver.time = info.time;
+    run.solver.steps = info.step;
     run.case_fingerprint = info.case_fingerprint;
     run.driver.stage = static_cast<int>(scalar("stage"));
     run.driver.stage_begun = scalar("stage_begun") != 0.0;
@@ -43,7 +44,8 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     run.driver.stage_steps = static_cast<long>(scalar("stage_steps"));
     run.driver.next_snapshot = scalar("next_snapshot");
     run.driver.initial_snapshot_written = scalar("initial_snapshot_written") != 0.0;
-    run.absorbed_energy = scalar("absorbed_energy");
+    run.solver.absorbed_energy = scalar("absorbed_energy");
+    run.solver.external_work = scalar("external_work");
     for (const auto& [name, values] : info.extras.arrays)
         if (name == "snapshot_times") run.snapshot_times = values;
     bool have_history = false;

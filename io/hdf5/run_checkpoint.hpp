@@ -9,14 +9,13 @@
 #include "core/table.hpp"
 #include "coupling/driver/stage_driver.hpp"
 #include "mpm/points/particles.hpp"
+#include "mpm/solver/mpm_solver.hpp"
 
 namespace pilempm::io {
 
 struct RunCheckpoint {
     coupling::DriverState driver;
-    double time = 0.0;             // s, the solver's clock
-    long steps = 0;
-    double absorbed_energy = 0.0;  // J, taken out by the absorbing boundaries so far
+    mpm::SolverState solver;       // the clock and the energy ledger
     Table history;
     std::vector<double> snapshot_times;  // s, one per VTK file written
     std::string case_fingerprint;

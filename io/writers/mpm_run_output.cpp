@@ -26,9 +26,7 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
                                  const mpm::MpmSolver<D>& solver, const Table& history) {
     RunCheckpoint run;
     run.driver = state;
-    run.time = solver.time();
-    run.steps = solver.steps();
-    run.absorbed_energy = solver.absorbed_energy();
+    run.solver = solver.state();
     run.history = history;
     run.snapshot_times = vtk_.step_times();
     run.case_fingerprint = fingerprint_;

@@ -63,31 +63,63 @@ Hat1D integrate_hat(double xi, double h, double a, double b, bool weighted) {
     return r;
 }
 
+// A domain that reaches past an open grid edge (material moving through an absorbing
+// boundary) must not lose the weight of the node beyond it: S and grad S would no longer
+// sum to 1 and 0, and the point's stress would push on the edge like a spring (a
+// reflector that grows with displacement / cell size). That node takes the edge cell's
+// field extrapolated, v_beyond = 2 v_edge - v_next, as linear and CPDI shapes extrapolate
+// it. Past a closed edge (fixed, roller, frictional) its weight is dropped: it is at rest.
+// Adds the share (s, g; G may be null) of the node beyond edge `side` to a stencil whose
+// first node is lo and last is hi.
+inline void extrapolate_past_edge(int side, int lo, int hi, double s, double g, double* S, double* G) {
+    const int edge = side == 0 ? 0 : hi - lo, next = side == 0 ? 1 : hi - lo - 1;
+    S[edge] += 2.0 * s;
+    S[next] -= s;
+    if (G) {
+        G[edge] += 2.0 * g;
+        G[next] -= g;
+    }
+}
+
+// uGIMP weight and slope of the node xi cells from the point (cell units, half-length lam).
+inline void ugimp_node(double xi, double lam, double inv_lam, double inv_h, double& S, double& G) {
+    const double a = std::abs(xi), sgn = xi >= 0.0 ? 1.0 : -1.0;
+    if (a < lam) {
+        S = 1.0 - 0.5 * (xi * xi + lam * lam) * inv_lam;
+        G = -xi * inv_lam * inv_h;
+    } else if (a <= 1.0 - lam) {
+        S = 1.0 - a;
+        G = -sgn * inv_h;
+    } else if (a < 1.0 + lam) {
+        const double d = 1.0 + lam - a;
+        S = 0.25 * d * d * inv_lam;
+        G = -0.5 * sgn * d * inv_lam * inv_h;
+    } else {
+        S = G = 0.0;
+    }
+}
+
 // uGIMP along one axis for a half-length l <= h/2 without a radial weight: the nodes
 // first.. that the domain [x - l, x + l] reaches (2 or 3; 4 only on a knife edge), with
 // the closed-form weight and slope of Bardenhagen & Kober (2004), the values
 // integrate_hat gives, written in cell units so that no division is left in the loop.
-inline int ugimp_axis(double x, double l, double origin, double h, int cells, int& first, double* S, double* G) {
+// open: whether the low and high edges may be crossed.
+inline int ugimp_axis(double x, double l, double origin, double h, int cells, const bool* open, int& first, double* S,
+                      double* G) {
     const double inv_h = 1.0 / h, u = (x - origin) * inv_h, lam = l * inv_h;
     const double inv_lam = 1.0 / lam;
-    const int lo = std::max(0, static_cast<int>(std::floor(u - lam)));
-    const int hi = std::min(cells, static_cast<int>(std::ceil(u + lam)));
+    const int lo_all = static_cast<int>(std::floor(u - lam)), hi_all = static_cast<int>(std::ceil(u + lam));
+    const int lo = std::max(0, lo_all), hi = std::min(cells, hi_all);
     first = lo;
-    for (int i = 0; i <= hi - lo; ++i) {
-        const double xi = u - (lo + i), a = std::abs(xi), sgn = xi >= 0.0 ? 1.0 : -1.0;
-        if (a < lam) {
-            S[i] = 1.0 - 0.5 * (xi * xi + lam * lam) * inv_lam;
-            G[i] = -xi * inv_lam * inv_h;
-        } else if (a <= 1.0 - lam) {
-            S[i] = 1.0 - a;
-            G[i] = -sgn * inv_h;
-        } else if (a < 1.0 + lam) {
-            const double d = 1.0 + lam - a;
-            S[i] = 0.25 * d * d * inv_lam;
-            G[i] = -0.5 * sgn * d * inv_lam * inv_h;
-        } else {
-            S[i] = G[i] = 0.0;
-        }
+    for (int i = 0; i <= hi - lo; ++i) ugimp_node(u - (lo + i), lam, inv_lam, inv_h, S[i], G[i]);
+    double s, g;
+    if (lo_all < lo && open[0]) {
+        ugimp_node(u - lo_all, lam, inv_lam, inv_h, s, g);
+        extrapolate_past_edge(0, lo, hi, s, g, S, G);
+    }
+    if (hi_all > hi && open[1]) {
+        ugimp_node(u - hi_all, lam, inv_lam, inv_h, s, g);
+        extrapolate_past_edge(1, lo, hi, s, g, S, G);
     }
     return hi - lo + 1;
 }
@@ -131,14 +163,16 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
     for (int d = 0; d < D; ++d) {
         const double l = half_domain[d * D + d], h = g.spacing[d];
         const bool weighted = axisymmetric && d == 0;
+        const bool open[2] = {!g.closed[2 * d], !g.closed[2 * d + 1]};
         if (!weighted && l <= 0.5 * h) {
-            n_axis[d] = ugimp_axis(x[d], l, g.origin[d], h, g.cells[d], first[d], S[d], G[d]);
+            n_axis[d] = ugimp_axis(x[d], l, g.origin[d], h, g.cells[d], open, first[d], S[d], G[d]);
             continue;
         }
         const double a = x[d] - l, b = x[d] + l;
         const double W = weighted ? 2.0 * l * x[d] : 2.0 * l;  // int w ds over the domain
-        const int lo = std::max(0, static_cast<int>(std::floor((a - g.origin[d]) / h)));
-        const int hi = std::min(g.cells[d], static_cast<int>(std::ceil((b - g.origin[d]) / h)));
+        const int lo_all = static_cast<int>(std::floor((a - g.origin[d]) / h));
+        const int hi_all = static_cast<int>(std::ceil((b - g.origin[d]) / h));
+        const int lo = std::max(0, lo_all), hi = std::min(g.cells[d], hi_all);
         first[d] = lo;
         n_axis[d] = hi - lo + 1;
         if (n_axis[d] > 4) throw std::logic_error("GIMP domain larger than a cell");
@@ -147,6 +181,13 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
             S[d][i] = r.value / W;
             G[d][i] = r.slope / W;
             if (weighted) H[i] = r.plain / W;
+        }
+        for (int side = 0; side < 2; ++side) {
+            const int beyond = side == 0 ? lo_all : hi_all;
+            if (beyond == (side == 0 ? lo : hi) || !open[side]) continue;
+            const Hat1D r = integrate_hat(g.coordinate(d, beyond), h, a, b, weighted);
+            extrapolate_past_edge(side, lo, hi, r.value / W, r.slope / W, S[d], G[d]);
+            if (weighted) extrapolate_past_edge(side, lo, hi, r.plain / W, 0.0, H, nullptr);
         }
     }
     // Tensor product of the per-axis weights, written straight into the stencil: the

@@ -270,6 +270,7 @@ void MpmSolver<D>::update_grid(double dt) {
             double v1 = ((mass / dt - 0.5 * c) * v0 + f) / (mass / dt + 0.5 * c);
             g.reaction[k] = 0.0;
             if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
+            external_work_ += 0.5 * external_[k] * (v0 + v1) * dt;
             g.velocity[k] = v1;
             g.acceleration[k] = (v1 - v0) / dt;
         }

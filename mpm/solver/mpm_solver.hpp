@@ -39,6 +39,15 @@ struct MpmModel {
     std::vector<SurfaceLoad> surface_loads;  // the active ones; set between steps
 };
 
+// What a step carries over besides the model: the clock and the energy ledger. A resumed run
+// restores it from its checkpoint.
+struct SolverState {
+    double time = 0.0;             // s
+    long steps = 0;
+    double absorbed_energy = 0.0;  // J, work of the absorbing dashpots (energy leaving)
+    double external_work = 0.0;    // J, work of the external forces (gravity, surface loads)
+};
+
 template <int D>
 class MpmSolver {
 public:
@@ -55,12 +64,19 @@ public:
     double unbalanced_force_ratio() const { return unbalanced_ratio_; }
     // Work done on the grid by the absorbing dashpots so far (energy leaving), J.
     double absorbed_energy() const { return absorbed_; }
+    // Work done on the grid by the external forces (gravity, surface loads) so far, J.
+    double external_work() const { return external_work_; }
     void set_time(double t, long steps) {
         time_ = t;
         steps_ = steps;
     }
-    // A resumed run continues the energy ledger of the run it resumes.
-    void set_absorbed_energy(double e) { absorbed_ = e; }
+    SolverState state() const { return {time_, steps_, absorbed_, external_work_}; }
+    void restore(const SolverState& s) {
+        time_ = s.time;
+        steps_ = s.steps;
+        absorbed_ = s.absorbed_energy;
+        external_work_ = s.external_work;
+    }
 
 private:
     void velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C, double* out) const;
@@ -87,6 +103,7 @@ private:
     long steps_ = 0;
     double unbalanced_ratio_ = 0.0;
     double absorbed_ = 0.0;
+    double external_work_ = 0.0;
 };
 
 }  // namespace pilempm::mpm

@@ -20,6 +20,7 @@ pilempm_case_test(verify_mpm_column_axisymmetric cases/verification/mpm-column-a
 pilempm_case_test(verify_mpm_column_3d cases/verification/mpm-column-3d.yaml verification)
 pilempm_case_test(verify_mpm_lame_cylinder cases/verification/mpm-lame-cylinder.yaml verification)
 pilempm_case_test(verify_mpm_wave_1d cases/verification/mpm-wave-1d.yaml verification)
+pilempm_case_test(verify_mpm_shear_wave_1d cases/verification/mpm-shear-wave-1d.yaml verification)
 pilempm_case_test(verify_mpm_stress_noise_gimp cases/verification/mpm-stress-noise-gimp.yaml verification)
 pilempm_case_test(verify_mpm_stress_noise_cpdi cases/verification/mpm-stress-noise-cpdi.yaml verification)
 pilempm_case_test(verify_mpm_k0_initial_stress cases/verification/mpm-k0-initial-stress.yaml verification)

@@ -52,8 +52,10 @@ void expect_same_outputs(const fs::path& whole, const fs::path& split) {
     for (const auto& e : fs::directory_iterator(split / "vtk")) b.insert(e.path().filename().string());
     EXPECT_EQ(a, b) << "the VTK series hold other files";
     EXPECT_GT(a.size(), 3u);
-    for (const auto& f : a)
-        if (b.count(f)) EXPECT_EQ(read_file(whole / "vtk" / f), read_file(split / "vtk" / f)) << f << " differs";
+    for (const auto& f : a) {
+        if (!b.count(f)) continue;
+        EXPECT_EQ(read_file(whole / "vtk" / f), read_file(split / "vtk" / f)) << f << " differs";
+    }
 }
 
 // Runs `case_file` whole, and interrupted by `signal` after `steps` steps (exit 130, the
@@ -94,7 +96,7 @@ std::string wave_case(const fs::path& dir, bool apic) {
 }
 
 // A column settled under gravity (quasi-static), then struck by a pulse switched on in the
-// dynamic stage only, on an absorbing base.
+// dynamic stage only; one side absorbs.
 const char* kSettleThenBlow = R"(title: "settle, then a blow"
 analysis: mpm
 dimension: 2
@@ -105,8 +107,8 @@ regions:
   - {material: soil, box: {min: [0.0, 0.0], max: [0.5, 4.0]}}
 boundaries:
   - {plane: x_min, type: roller}
-  - {plane: x_max, type: roller}
-  - {plane: y_min, type: absorbing}
+  - {plane: x_max, type: absorbing}
+  - {plane: y_min, type: roller}
 initial_stress: {type: k0, surface: 4.0}
 pressures:
   - {box: {min: [0.0, 3.9], max: [0.5, 4.0]}, face: y_max, pressure: 20.0e3, duration: 0.01, stages: [blow]}

@@ -131,17 +131,14 @@ namespace {
 struct MemoryCheckpoint final : StageObserver<2> {
     mpm::Particles<2> particles;
     DriverState state;
-    double time = 0.0, absorbed = 0.0;
-    long steps = 0;
+    mpm::SolverState solver;
     Table history;
     int taken = 0;
     void checkpoint(const DriverState& s, const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>& solver,
                     const Table& h) override {
         particles = m.particles;
         state = s;
-        time = solver.time();
-        steps = solver.steps();
-        absorbed = solver.absorbed_energy();
+        this->solver = solver.state();
         history = h;
         ++taken;
     }
@@ -192,7 +189,7 @@ void check_resume(long stop_after) {
         ASSERT_EQ(first.run(&stop), StageDriver<2>::Outcome::Stopped);
     }
     ::unsetenv("PILEMPM_INTERRUPT_AFTER_STEPS");
-    ASSERT_EQ(saved.steps, stop_after);
+    ASSERT_EQ(saved.solver.steps, stop_after);
 
     // As the job does: the run is built from the case, then the checkpoint's points replace
     // the fresh ones.
@@ -201,7 +198,7 @@ void check_resume(long stop_after) {
     resumed_model.particles = saved.particles;
     StageDriver<2> resumed(resumed_model, settle_then_blow(), loads, {});
     add_recorders(resumed);
-    resumed.resume(saved.state, saved.time, saved.steps, saved.absorbed, saved.history);
+    resumed.resume(saved.state, saved.solver, saved.history);
     ASSERT_EQ(resumed.run(), StageDriver<2>::Outcome::Completed);
 
     const Table& a = whole.history();
@@ -211,6 +208,7 @@ void check_resume(long stop_after) {
         for (std::size_t c = 0; c < a.columns.size(); ++c) ASSERT_EQ(a.data[c][r], b.data[c][r]) << a.columns[c] << " row " << r;
     EXPECT_GT(whole.solver().absorbed_energy(), 0.0);
     EXPECT_EQ(whole.solver().absorbed_energy(), resumed.solver().absorbed_energy());
+    EXPECT_EQ(whole.solver().external_work(), resumed.solver().external_work());
     for (std::size_t i = 0; i < whole_model.particles.x.size(); ++i)
         ASSERT_EQ(whole_model.particles.x[i], resumed_model.particles.x[i]);
     for (std::size_t i = 0; i < whole_model.particles.stress.size(); ++i)

@@ -63,6 +63,22 @@ TEST(MpmShapeFunctions, PlaneStrainAllKinds) {
     check_consistency<2>(ShapeKind::CPDI, false, x, sheared);
 }
 
+TEST(MpmShapeFunctions, DomainsReachingPastTheGridEdgeStayConsistent) {
+    // Material crossing an absorbing boundary: the domains reach past the grid's edges
+    // (x_min and y_max here; the grid is 4 m x 3.2 m).
+    const double corner[2] = {0.05, 3.15};
+    const double half[4] = {0.125, 0.0, 0.0, 0.1};
+    const double sheared[4] = {0.12, 0.03, -0.02, 0.09};
+    check_consistency<2>(ShapeKind::Linear, false, corner, half);
+    check_consistency<2>(ShapeKind::GIMP, false, corner, half);
+    check_consistency<2>(ShapeKind::CPDI, false, corner, sheared);
+    const double outer[2] = {3.95, 0.05};  // past r = 4 m and z = 0 in axisymmetry
+    check_consistency<2>(ShapeKind::GIMP, true, outer, half);
+    const double corner3[3] = {3.95, 0.05, 3.15};
+    const double half3[9] = {0.125, 0, 0, 0, 0.1, 0, 0, 0, 0.1};
+    check_consistency<3>(ShapeKind::GIMP, false, corner3, half3);
+}
+
 TEST(MpmShapeFunctions, AxisymmetricAllKinds) {
     const double near_axis[2] = {0.2, 1.0};  // the domain reaches within 0.075 m of the axis
     const double x[2] = {2.3, 1.23};
