@@ -143,6 +143,11 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         const double steps_here = static_cast<double>(solver.steps() - resumed_steps);
         summary.add("wall_time_s", wall)
             .add("particle_steps_per_s", wall > 0.0 ? steps_here * static_cast<double>(m.particles.size()) / wall : 0.0);
+        const auto mem = solver.memory();
+        summary.add("stored_grid_nodes", static_cast<double>(mem.stored_nodes))
+            .add("memory_bytes_per_point", static_cast<double>(mem.bytes_per_point))
+            .add("memory_bytes_per_stored_node", static_cast<double>(mem.bytes_per_stored_node))
+            .add("memory_MB", 1e-6 * static_cast<double>(mem.total_bytes()));
     }
     {
         // Where the material ended up: run-out, heave and settlement read off the extent.
@@ -187,23 +192,28 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     return 0;
 }
 
+template <int D>
+void describe_run(const io::MpmCase& c) {
+    auto run = io::build_mpm_run<D>(c);
+    mpm::MpmSolver<D> solver(run.model);
+    solver.activate_grid();
+    const auto mem = solver.memory();
+    std::printf("  MPM            %s, %zu material points, dt %.3g s\n",
+                D == 3 ? "3D" : c.axisymmetric ? "2D axisymmetric" : "2D plane strain", mem.points,
+                solver.stable_time_step());
+    std::printf("  grid           %zu nodes; stored where the points are: %d blocks of %d nodes\n", mem.grid_nodes,
+                run.model.grid.active_blocks(), mpm::Grid<D>::kBlockNodes);
+    std::printf("  memory         %.1f MB (%zu B per point, %zu B per stored node)\n", 1e-6 * mem.total_bytes(),
+                mem.bytes_per_point, mem.bytes_per_stored_node);
+}
+
 }  // namespace
 
 int check_mpm_case(const std::string& file) {
     const io::MpmCase c = io::read_mpm_case(file);
     std::printf("%s: valid\n  title          %s\n", file.c_str(), c.title.c_str());
-    if (c.dimension == 2) {
-        auto run = io::build_mpm_run<2>(c);
-        mpm::MpmSolver<2> solver(run.model);
-        std::printf("  MPM            2D %s, %zu material points, %d grid nodes, dt %.3g s\n",
-                    c.axisymmetric ? "axisymmetric" : "plane strain", run.model.particles.size(),
-                    run.model.grid.num_nodes(), solver.stable_time_step());
-    } else {
-        auto run = io::build_mpm_run<3>(c);
-        mpm::MpmSolver<3> solver(run.model);
-        std::printf("  MPM            3D, %zu material points, %d grid nodes, dt %.3g s\n", run.model.particles.size(),
-                    run.model.grid.num_nodes(), solver.stable_time_step());
-    }
+    if (c.dimension == 2) describe_run<2>(c);
+    else describe_run<3>(c);
     std::printf("  stages         %zu\n", c.stages.size());
     return 0;
 }

@@ -37,7 +37,8 @@ template <int D>
 void ReactionRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>&, std::vector<double>& row) const {
     for (int d = 0; d < D; ++d) {
         double r = 0.0;
-        for (int n : nodes_) r += m.grid.reaction[D * n + d];
+        for (int n : nodes_)
+            if (const auto* c = m.grid.find_condition(n)) r += c->reaction[d];
         row.push_back(r);
     }
 }

@@ -121,10 +121,11 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             double x[D];
             for (int d = 0; d < D; ++d) x[d] = m.grid.coordinate(d, ijk[d]);
             if (!in_box<D>(v.box, x)) continue;
+            auto& cond = m.grid.condition(n);
             for (int d = 0; d < D; ++d)
                 if (v.components[d]) {
-                    m.grid.fixed[D * n + d] = 1;
-                    m.grid.prescribed[D * n + d] = v.velocity[d];
+                    cond.fixed[d] = 1;
+                    cond.prescribed[d] = v.velocity[d];
                 }
             run.reaction_nodes.push_back(n);
         }

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFormat = "pilempm-mpm-checkpoint";
-constexpr int kFormatVersion = 3;  // 2: the affine velocity field C; 3: arrays and tables
+constexpr int kFormatVersion = 4;  // 2: the affine velocity field C; 3: arrays and tables; 4: field
 // Datasets are chunked (Fletcher32 needs chunks; a chunk must stay below 4 GiB).
 constexpr hsize_t kChunkValues = hsize_t{1} << 20;
 
@@ -78,6 +78,7 @@ void validate(const Context& c, const mpm::Particles<D>& p) {
     need("stress", p.stress.size(), 6);
     need("strain", p.strain.size(), 6);
     need("material", p.material.size(), 1);
+    need("field", p.field.size(), 1);
     need("state", p.state.size(), static_cast<std::size_t>(p.state_stride));
     need("external_force", p.external_force.size(), D);
 }
@@ -132,6 +133,7 @@ void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>&
     write_array(c, g, "stress", p.stress);
     write_array(c, g, "strain", p.strain);
     write_array(c, g, "material", p.material);
+    write_array(c, g, "field", p.field);
     {
         Hid state = write_array(c, g, "state", p.state);
         write_attribute(c, state.get(), "state_stride", p.state_stride);
@@ -339,7 +341,7 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
         c.fail(std::string("not an MPM checkpoint (root attribute format is not \"") + kFormat +
                "\")");
     const int version = read_attribute<int>(c, root, "/", "format_version");
-    if (version != kFormatVersion && version != 2)
+    if (version < 2 || version > kFormatVersion)
         c.fail("checkpoint format version " + std::to_string(version) + ", this build reads " +
                std::to_string(kFormatVersion));
 
@@ -379,6 +381,8 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
     q.stress = read_array<double>(c, g, gp, "stress", 6 * n, six);
     q.strain = read_array<double>(c, g, gp, "strain", 6 * n, six);
     q.material = read_array<int>(c, g, gp, "material", n, one);
+    // Before format 4 every point moved with the grid's first velocity field.
+    q.field = version >= 4 ? read_array<int>(c, g, gp, "field", n, one) : std::vector<int>(n, 0);
     {
         if (H5Lexists(g, "state", H5P_DEFAULT) <= 0) c.fail("missing dataset /particles/state");
         Hid state = c.make(H5Dopen2(g, "state", H5P_DEFAULT), H5Dclose,

@@ -33,7 +33,7 @@ struct CheckpointInfo {
 //  /particles/mass, volume, volume0        1 per point, double
 //  /particles/C, F, domain0                D*D per point, double
 //  /particles/stress, strain               6 per point, double
-//  /particles/material                     1 per point, int32
+//  /particles/material, field              1 per point, int32 (field: format 4)
 //  /particles/state                        state_stride per point, double; attribute
 //                                          "state_stride" (int)
 //  /scalars                                double dataset, attribute "names" (string array)

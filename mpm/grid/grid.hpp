@@ -1,39 +1,99 @@
 #pragma once
-// Rectilinear background grid with uniform spacing per axis (O(1) cell lookup), node
-// data as structure of arrays. Nodes are numbered x fastest, then y (then z).
+// Rectilinear background grid with uniform spacing per axis (O(1) cell lookup), stored in
+// blocks of nodes: only the blocks the material points reach hold node data, so a box of
+// kilometres of half-space costs memory where the soil is, not where the grid is.
+// - Nodes have a global number (x fastest, then y, then z) for setting up and reporting,
+//   and, while their block is active, a stored index into the node arrays.
+// - Each node holds `fields` velocity fields (mass, momentum, force, velocity,
+//   acceleration per field): the solid, the pore water, one per side of a body in contact.
+//   Field f of stored node n is entry n * fields + f.
+// - Supports, prescribed velocities, dashpots and walls are NodeConditions on the nodes
+//   they name; the solver looks them up through the stored node.
 #include <array>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 namespace pilempm::mpm {
 
+// What a boundary does at one node, for every velocity field there.
+struct NodeCondition {
+    int node = 0;                   // global node number
+    unsigned char fixed[3] = {0, 0, 0};  // the velocity component is prescribed
+    double prescribed[3] = {0, 0, 0};   // m/s (0 for supports)
+    double dashpot[3] = {0, 0, 0};      // N s/m (absorbing boundaries)
+    int wall = -1;                  // rigid Coulomb wall: axis * 2 + side, -1 none
+    double wall_friction = 0.0;
+    double reaction[3] = {0, 0, 0};     // N: what the prescription and the wall exerted last step
+};
+
 template <int D>
 struct Grid {
+    // Nodes along a block's edge: large enough that most stencils lie in one block (a uGIMP
+    // stencil of 3 nodes per axis crosses into the next block at 2 of 16 or 8 positions).
+    static constexpr int kBlockEdge = D == 2 ? 16 : 8;
+    static constexpr int kBlockShift = D == 2 ? 4 : 3;
+    static constexpr int kBlockNodes = D == 2 ? 256 : 512;
+
     std::array<double, D> origin{};
     std::array<double, D> spacing{};
     std::array<int, D> cells{};
+    int fields = 1;
 
-    // Node data, reset each step (fixed and damping persist).
-    std::vector<double> mass;          // kg (per radian when axisymmetric)
-    std::vector<double> momentum;      // D per node
-    std::vector<double> force;         // D per node, internal + external
-    std::vector<double> velocity;      // D per node, after the update
-    std::vector<double> acceleration;  // D per node
-    std::vector<unsigned char> fixed;  // D per node: 1 = that velocity component is prescribed
-    std::vector<double> prescribed;    // D per node: the prescribed velocity (0 for supports)
-    std::vector<double> reaction;      // D per node: force the prescription exerted last step, N
-    std::vector<double> dashpot;       // D per node, N s/m (absorbing boundaries)
-    std::vector<double> position;      // D per node, m: kept so that hot loops need no ijk()
-    // Rigid frictional walls (Coulomb): per node, the wall's axis * 2 + side (-1: none) and
-    // the friction coefficient. The material may not move into the wall and slides on it.
-    std::vector<int> wall;
-    std::vector<double> wall_friction;
+    // Node data of the active blocks (stored nodes), reset each step.
+    std::vector<double> mass;          // `fields` per stored node, kg (per radian when axisymmetric)
+    std::vector<double> momentum;      // D per field
+    std::vector<double> force;         // D per field, internal + external
+    std::vector<double> velocity;      // D per field, after the update
+    std::vector<double> acceleration;  // D per field
+    std::vector<double> position;      // D per field (the node's, repeated), m: hot loops need no ijk()
+    std::vector<int> condition_at;     // per stored node: index into conditions, -1 none
+
+    std::vector<NodeCondition> conditions;
     // Edge planes (axis * 2 + side) the material cannot cross: fixed, roller and frictional
     // boundaries. A point carried past one by interpolation is put back on the plane.
     std::array<bool, 2 * D> closed{};
 
+    // Sizes the block table for origin, spacing and cells; no block is active yet.
     void allocate();
-    void reset();
+    // Makes exactly the blocks marked (one byte per block, block numbers x fastest) active,
+    // in block order; returns whether the set changed (node arrays and conditions remapped).
+    bool set_active_blocks(const std::vector<unsigned char>& marked);
+    void activate_all();  // every block (tests, small grids)
+    const std::vector<unsigned char>& active_marks() const { return marked_; }
+    int block_count() const { return static_cast<int>(slot_of_block_.size()); }
+    int active_blocks() const { return static_cast<int>(block_of_slot_.size()); }
+    int stored_nodes() const { return active_blocks() * kBlockNodes; }
+    // The block holding global node ijk, and the blocks along each axis.
+    int block_of(const std::array<int, D>& ijk) const {
+        int b = 0;
+        for (int d = D - 1; d >= 0; --d) b = b * blocks_[d] + (ijk[d] >> kBlockShift);
+        return b;
+    }
+    const std::array<int, D>& blocks_along() const { return blocks_; }
+    // Stored index of the node at ijk; -1 when its block is not active.
+    int index(const std::array<int, D>& ijk) const {
+        const int slot = slot_of_block_[block_of(ijk)];
+        if (slot < 0) return -1;
+        int local = 0;
+        for (int d = D - 1; d >= 0; --d) local = local * kBlockEdge + (ijk[d] & (kBlockEdge - 1));
+        return slot * kBlockNodes + local;
+    }
+    // The slot of a block (-1: inactive); stored index = slot * kBlockNodes + local, with
+    // block = sum (i_d >> kBlockShift) block_stride(d), local = sum (i_d & (kBlockEdge - 1)) kBlockEdge^d.
+    int slot_of_block(int block) const { return slot_of_block_[block]; }
+    int block_stride(int d) const {
+        int s = 1;
+        for (int e = 0; e < d; ++e) s *= blocks_[e];
+        return s;
+    }
+    std::array<int, D> stored_ijk(int stored) const;
+    bool stored_node_exists(int stored) const;  // inside the grid (blocks overhang its edge)
+
+    // The condition of a global node, created (all free) if it has none.
+    NodeCondition& condition(int node);
+    const NodeCondition* find_condition(int node) const;
+
     int nodes_along(int d) const { return cells[d] + 1; }
     int num_nodes() const {
         int n = 1;
@@ -64,6 +124,16 @@ struct Grid {
             if (x[d] < origin[d] || x[d] > origin[d] + spacing[d] * cells[d]) return false;
         return true;
     }
+    // Bytes of node data per stored node (all fields), for memory reports.
+    std::size_t bytes_per_stored_node() const;
+
+private:
+    std::array<int, D> blocks_{};
+    std::vector<int> slot_of_block_;
+    std::vector<int> block_of_slot_;
+    std::vector<unsigned char> marked_;
+    bool remap_ = true;  // conditions were added since the last activation
+    std::unordered_map<int, int> condition_of_node_;
 };
 
 }  // namespace pilempm::mpm

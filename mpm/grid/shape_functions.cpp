@@ -141,7 +141,7 @@ void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s)
             w[d] = bit ? f[d] : 1.0 - f[d];
             dw[d] = (bit ? 1.0 : -1.0) / g.spacing[d];
         }
-        const int k = s.append(g.node(c));
+        const int k = s.append(g.index(c));
         double N = 1.0;
         for (int d = 0; d < D; ++d) N *= w[d];
         s.e[k].N += N;
@@ -192,21 +192,19 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
     }
     // Tensor product of the per-axis weights, written straight into the stencil: the
     // nodes are distinct, so nothing accumulates. Entries with no weight and no gradient
-    // are left out. x runs fastest, as the nodes are numbered.
-    int stride[D], base = 0;
-    for (int d = 0; d < D; ++d) {
-        stride[d] = d == 0 ? 1 : stride[d - 1] * (g.cells[d - 1] + 1);
-        base += first[d] * stride[d];
+    // are left out. x runs fastest. A node's stored index is its block's slot and its place
+    // in the block; when the stencil lies in one block (most do) that is the first node's
+    // index plus an offset, else each node looks its block up.
+    constexpr int B = Grid<D>::kBlockEdge, shift = Grid<D>::kBlockShift;
+    bool one_block = true;
+    std::array<int, D> first_node;
+    int local_stride[D];
+    for (int d = 0, stride = 1; d < D; ++d, stride *= B) {
+        first_node[d] = first[d];
+        local_stride[d] = stride;
+        one_block = one_block && (first[d] >> shift) == ((first[d] + n_axis[d] - 1) >> shift);
     }
-    int total = 1;
-    for (int d = 0; d < D; ++d) total *= n_axis[d];
-    for (int m = 0; m < total; ++m) {
-        int idx[D], rem = m, node = base;
-        for (int d = 0; d < D; ++d) {
-            idx[d] = rem % n_axis[d];
-            rem /= n_axis[d];
-            node += idx[d] * stride[d];
-        }
+    auto emit = [&](int node, const int* idx) {
         double N = 1.0, grad[D];
         for (int d = 0; d < D; ++d) N *= S[d][idx[d]];
         bool any = N != 0.0;
@@ -216,17 +214,42 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
                 if (e != d) grad[d] *= S[e][idx[e]];
             any = any || grad[d] != 0.0;
         }
-        if (!any) continue;
+        if (!any) return;
         const int k = s.count++;
         s.e[k].node = node;
         s.e[k].N = N;
         for (int d = 0; d < D; ++d) s.e[k].dN[d] = grad[d];
-        double hoop = 0.0;
         if (axisymmetric) {
-            hoop = H[idx[0]];
+            double hoop = H[idx[0]];
             for (int e = 1; e < D; ++e) hoop *= S[e][idx[e]];
+            s.hoop[k] = hoop;
         }
-        s.hoop[k] = hoop;
+    };
+    // The nodes in order, x fastest, by nested loops (no integer division per node).
+    auto walk = [&](auto&& node_of) {
+        int idx[D];
+        if constexpr (D == 2) {
+            for (idx[1] = 0; idx[1] < n_axis[1]; ++idx[1])
+                for (idx[0] = 0; idx[0] < n_axis[0]; ++idx[0]) emit(node_of(idx), idx);
+        } else {
+            for (idx[2] = 0; idx[2] < n_axis[2]; ++idx[2])
+                for (idx[1] = 0; idx[1] < n_axis[1]; ++idx[1])
+                    for (idx[0] = 0; idx[0] < n_axis[0]; ++idx[0]) emit(node_of(idx), idx);
+        }
+    };
+    if (one_block) {
+        const int corner = g.index(first_node);
+        walk([&](const int* idx) {
+            int offset = corner;
+            for (int d = 0; d < D; ++d) offset += idx[d] * local_stride[d];
+            return offset;
+        });
+    } else {
+        walk([&](const int* idx) {
+            std::array<int, D> c;
+            for (int d = 0; d < D; ++d) c[d] = first[d] + idx[d];
+            return g.index(c);
+        });
     }
 }
 
@@ -313,7 +336,7 @@ void cpdi(const Grid<D>& g, bool axisymmetric, const double* x, const double* r,
 
 template <int D>
 void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, const double* x,
-                    const double* half_domain, Stencil<D>& s) {
+                    const double* half_domain, Stencil<D>& s, int field) {
     s.clear();
     for (int d = 0; d < D; ++d) s.x[d] = x[d];
     switch (kind) {
@@ -321,11 +344,14 @@ void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, cons
         case ShapeKind::GIMP: gimp<D>(grid, axisymmetric, x, half_domain, s); break;
         case ShapeKind::CPDI: cpdi<D>(grid, axisymmetric, x, half_domain, s); break;
     }
+    // Stored nodes to grid entries: the point's own velocity field at each node.
+    if (grid.fields > 1)
+        for (int k = 0; k < s.count; ++k) s.e[k].node = s.e[k].node * grid.fields + field;
 }
 
 template struct Stencil<2>;
 template struct Stencil<3>;
-template void evaluate_shape<2>(const Grid<2>&, ShapeKind, bool, const double*, const double*, Stencil<2>&);
-template void evaluate_shape<3>(const Grid<3>&, ShapeKind, bool, const double*, const double*, Stencil<3>&);
+template void evaluate_shape<2>(const Grid<2>&, ShapeKind, bool, const double*, const double*, Stencil<2>&, int);
+template void evaluate_shape<3>(const Grid<3>&, ShapeKind, bool, const double*, const double*, Stencil<3>&, int);
 
 }  // namespace pilempm::mpm

@@ -18,13 +18,13 @@ struct Stencil {
     // One entry per node, its fields together: the passes over the points read the first
     // `count` entries as one contiguous block.
     struct Entry {
-        int node;
+        int node;  // the grid entry: stored node x the grid's fields + the point's field
         double N;
         double dN[D];
     };
     int count = 0;
     Entry e[kMax];
-    double hoop[kMax];  // axisymmetric only (zero otherwise)
+    double hoop[kMax];  // axisymmetric only (not written otherwise: nothing reads it)
     double x[D];        // where the point was when the stencil was built
     void clear() { count = 0; }
     int slot(int n);    // the entry for node n, created zeroed if new (searches: CPDI)
@@ -32,9 +32,10 @@ struct Stencil {
 };
 
 // x: point position; domain: D half-edge vectors of the particle domain (row k = vector k),
-// current for CPDI, undeformed for GIMP, unused for linear.
+// current for CPDI, undeformed for GIMP, unused for linear; field: the velocity field the
+// point moves with. The nodes must be in active blocks.
 template <int D>
 void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, const double* x,
-                    const double* half_domain, Stencil<D>& s);
+                    const double* half_domain, Stencil<D>& s, int field = 0);
 
 }  // namespace pilempm::mpm

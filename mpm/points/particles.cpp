@@ -25,7 +25,15 @@ void Particles<D>::add(const double* position, double point_mass, double point_v
         dstrain.push_back(0.0);
     }
     material.push_back(material_id);
+    field.push_back(0);
     for (int k = 0; k < state_stride; ++k) state.push_back(0.0);
+}
+
+template <int D>
+std::size_t Particles<D>::bytes_per_point() const {
+    // x, v, external_force (D); C, F, domain0 (D^2); mass, volume, volume0; stress, strain,
+    // dstrain (6); state; material and field.
+    return (3 * D + 3 * D * D + 3 + 18 + static_cast<std::size_t>(state_stride)) * sizeof(double) + 2 * sizeof(int);
 }
 
 template <int D>

@@ -22,11 +22,14 @@ struct Particles {
     std::vector<double> strain;   // 6 per point, accumulated log-free small-strain sum
     std::vector<double> dstrain;  // 6 per point, this step's increment (scratch)
     std::vector<int> material;    // index into the material list
+    std::vector<int> field;       // the grid's velocity field it moves with (0: the default)
     std::vector<double> state;    // state_stride per point
     int state_stride = 0;
     std::vector<double> external_force;  // D per point, N (tractions mapped to points)
 
     std::size_t size() const { return mass.size(); }
+    // Bytes each point takes in these arrays.
+    std::size_t bytes_per_point() const;
     // Appends one point at rest with F = I and zero stress; domain0 = diag(lengths).
     void add(const double* position, double point_mass, double point_volume, const double* lengths,
              int material_id);

@@ -50,13 +50,14 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
     for (int n = 0; n < nn; ++n) {
         const auto c = g.ijk(n);
         if (c[axis] != plane) continue;
+        NodeCondition& cond = g.condition(n);
         if (kind == BoundaryKind::Fixed) {
-            for (int d = 0; d < D; ++d) g.fixed[D * n + d] = 1;
+            for (int d = 0; d < D; ++d) cond.fixed[d] = 1;
         } else if (kind == BoundaryKind::Roller) {
-            g.fixed[D * n + axis] = 1;
+            cond.fixed[axis] = 1;
         } else if (kind == BoundaryKind::Frictional) {
-            g.wall[n] = 2 * axis + side;
-            g.wall_friction[n] = friction;
+            cond.wall = 2 * axis + side;
+            cond.wall_friction = friction;
         } else {
             // Tributary face area of the node: half a cell at the ends of each edge.
             double area = 1.0;
@@ -66,7 +67,7 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
                 area *= (end ? 0.5 : 1.0) * g.spacing[d];
             }
             if (axisymmetric) area *= g.coordinate(0, c[0]);
-            for (int d = 0; d < D; ++d) g.dashpot[D * n + d] += density * (d == axis ? cp : cs) * area;
+            for (int d = 0; d < D; ++d) cond.dashpot[d] += density * (d == axis ? cp : cs) * area;
         }
     }
 }

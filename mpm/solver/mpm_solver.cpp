@@ -3,6 +3,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
+#include <limits>
+#include <utility>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -17,7 +20,7 @@ constexpr long kParallelPoints = 4000;
 template <int D>
 MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
     if (m_.axisymmetric && D != 2) throw std::invalid_argument("axisymmetry needs D = 2");
-    if (m_.grid.mass.empty()) m_.grid.allocate();
+    if (m_.grid.block_count() == 0) m_.grid.allocate();
     points_of_material_.assign(m_.materials.size(), {});
     for (const auto& mat : m_.materials) tensor_states_.push_back(mat->num_tensor_state());
     for (std::size_t p = 0; p < m_.particles.size(); ++p) {
@@ -25,6 +28,9 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
         if (mat < 0 || mat >= static_cast<int>(m_.materials.size()))
             throw std::invalid_argument("material point with an unknown material");
         points_of_material_[mat].push_back(static_cast<int>(p));
+        if (m_.particles.field[p] >= m_.grid.fields)
+            throw std::invalid_argument("material point on velocity field " + std::to_string(m_.particles.field[p]) +
+                                        " of a grid with " + std::to_string(m_.grid.fields));
     }
     stencil_.resize(m_.particles.size());
     mass_ = total_mass();  // points keep their mass: the grid's "empty node" threshold is fixed
@@ -96,34 +102,11 @@ double MpmSolver<D>::stable_time_step() const {
     return c_max > 0.0 ? m_.cfl * h / c_max : 1e300;
 }
 
-// Every point must lie in the grid before its stencil is built (checked first, since
-// nothing may throw inside a parallel region).
+// The D half-edge vectors of point i's domain (row k = vector k): undeformed for uGIMP,
+// F-deformed for CPDI.
 template <int D>
-void MpmSolver<D>::check_points_inside() const {
+void MpmSolver<D>::half_edges(long i, double* half) const {
     const auto& p = m_.particles;
-    const long n = static_cast<long>(p.size());
-    int outside = 0;
-    long first_outside = n;
-#pragma omp parallel for schedule(static) reduction(+ : outside) reduction(min : first_outside) if (n > kParallelPoints)
-    for (long i = 0; i < n; ++i) {
-        if (m_.grid.inside(&p.x[D * i])) continue;
-        ++outside;
-        first_outside = std::min(first_outside, i);
-    }
-    if (outside > 0) {
-        std::string where;
-        for (int d = 0; d < D; ++d) where += (d ? ", " : "") + std::to_string(p.x[D * first_outside + d]);
-        throw std::runtime_error(std::to_string(outside) + " material point(s) left the grid, the first (point " +
-                                 std::to_string(first_outside) + ") at (" + where + ") m at t = " +
-                                 std::to_string(time_) + " s");
-    }
-}
-
-template <int D>
-void MpmSolver<D>::build_stencil(long i) {
-    const auto& p = m_.particles;
-    // Half-edge vectors of the domain: undeformed for uGIMP, F-deformed for CPDI.
-    double half[D * D];
     for (int k = 0; k < D; ++k)
         for (int d = 0; d < D; ++d) {
             double v = 0.0;
@@ -134,48 +117,219 @@ void MpmSolver<D>::build_stencil(long i) {
             }
             half[D * k + d] = 0.5 * v;
         }
-    evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &p.x[D * i], half, stencil_[i]);
 }
 
-// Each thread accumulates into its own copy of `fields` values per node; then they are
-// summed: scatter without atomics, deterministic for a fixed thread count.
+// Marks the blocks holding the nodes whose hats reach the box x +- extent (x in the grid);
+// returns the first and the last block marked.
+template <int D>
+inline std::pair<int, int> mark_blocks(const Grid<D>& g, const double* x, const double* extent, const double* inv_h,
+                                       unsigned char* marks) {
+    int lo[D], hi[D];
+    for (int d = 0; d < D; ++d) {
+        const int a = static_cast<int>(std::floor((x[d] - extent[d] - g.origin[d]) * inv_h[d]));
+        const int b = static_cast<int>((x[d] + extent[d] - g.origin[d]) * inv_h[d]) + 1;
+        lo[d] = std::max(0, a) >> Grid<D>::kBlockShift;
+        hi[d] = std::min(g.cells[d], b) >> Grid<D>::kBlockShift;
+    }
+    const auto& along = g.blocks_along();
+    int b[D], first = -1, last = -1;
+    for (int d = 0; d < D; ++d) b[d] = lo[d];
+    while (true) {
+        int block = 0;
+        for (int d = D - 1; d >= 0; --d) block = block * along[d] + b[d];
+        std::atomic_ref<unsigned char>(marks[block]).store(1, std::memory_order_relaxed);
+        if (first < 0) first = block;
+        last = block;
+        int d = 0;
+        while (d < D && ++b[d] > hi[d]) b[d] = lo[d], ++d;
+        if (d == D) break;
+    }
+    return {first, last};
+}
+
+// Every point must lie in the grid before its stencil is built (checked first, since
+// nothing may throw inside a parallel region). The same pass marks the blocks of nodes each
+// point's domain reaches, and the loaded faces': only those blocks hold node data this step.
+template <int D>
+void MpmSolver<D>::activate_grid() {
+    const auto& p = m_.particles;
+    auto& g = m_.grid;
+    const long n = static_cast<long>(p.size());
+    block_marks_.assign(g.block_count(), 0);
+    unsigned char* marks = block_marks_.data();
+    // Locals: the byte stores into the marks may alias anything, so nothing they need may
+    // be read through a pointer.
+    double inv_h[D], top[D], origin[D];
+    int cells[D], along[D];
+    for (int d = 0; d < D; ++d) {
+        origin[d] = g.origin[d];
+        inv_h[d] = 1.0 / g.spacing[d];
+        top[d] = g.origin[d] + g.spacing[d] * g.cells[d];
+        cells[d] = g.cells[d];
+        along[d] = g.blocks_along()[d];
+    }
+    const bool cpdi = m_.shape == ShapeKind::CPDI;
+    // The nodes a point's hats reach from its cell c: c..c+1 (linear), c-1..c+2 (uGIMP, whose
+    // domain is at most a cell); CPDI's deformed domain is measured.
+    const int below = m_.shape == ShapeKind::GIMP ? 1 : 0, above = below + 1;
+    // The points are cut into one chunk per thread; each chunk's scatter buffer covers only
+    // the blocks its points reach (points lie cell by cell, so a chunk is a slab of the
+    // body), and the chunks are the same in every pass of the step.
+    const int chunks = n > kParallelPoints ? omp_get_max_threads() : 1;
+    chunk_blocks_.assign(2 * chunks, -1);
+    int outside = 0;
+    long first_outside = n;
+#pragma omp parallel for schedule(static, 1) num_threads(chunks) reduction(+ : outside) reduction(min : first_outside)
+    for (int chunk = 0; chunk < chunks; ++chunk) {
+        // Points come cell by cell: a point in the cell of the one before marks nothing new.
+        int last[D];
+        for (int d = 0; d < D; ++d) last[d] = -1;
+        int lowest = std::numeric_limits<int>::max(), highest = -1;
+        for (long i = chunk_begin(chunk, chunks); i < chunk_begin(chunk + 1, chunks); ++i) {
+            const double* x = &p.x[D * i];
+            bool in = true;
+            for (int d = 0; d < D; ++d) in = in && x[d] >= origin[d] && x[d] <= top[d];
+            if (!in) {
+                ++outside;
+                first_outside = std::min(first_outside, i);
+                continue;
+            }
+            if (cpdi) {
+                double half[D * D], extent[D] = {};
+                half_edges(i, half);
+                for (int d = 0; d < D; ++d)
+                    for (int k = 0; k < D; ++k) extent[d] += std::abs(half[D * k + d]);
+                const auto [a, b] = mark_blocks<D>(g, x, extent, inv_h, marks);
+                lowest = std::min(lowest, a);
+                highest = std::max(highest, b);
+                continue;
+            }
+            int c[D];
+            bool same = true;
+            for (int d = 0; d < D; ++d) {
+                c[d] = static_cast<int>((x[d] - origin[d]) * inv_h[d]);  // x >= origin: truncation is floor
+                same = same && c[d] == last[d];
+            }
+            if (same) continue;
+            int lo[D], hi[D];
+            for (int d = 0; d < D; ++d) {
+                last[d] = c[d];
+                lo[d] = std::max(0, c[d] - below) >> Grid<D>::kBlockShift;
+                hi[d] = std::min(cells[d], c[d] + above) >> Grid<D>::kBlockShift;
+            }
+            int first_block, last_block;
+            if constexpr (D == 2) {
+                first_block = lo[0] + along[0] * lo[1];
+                last_block = hi[0] + along[0] * hi[1];
+                for (int by = lo[1]; by <= hi[1]; ++by)
+                    for (int bx = lo[0]; bx <= hi[0]; ++bx)
+                        std::atomic_ref<unsigned char>(marks[bx + along[0] * by]).store(1, std::memory_order_relaxed);
+            } else {
+                first_block = lo[0] + along[0] * (lo[1] + along[1] * lo[2]);
+                last_block = hi[0] + along[0] * (hi[1] + along[1] * hi[2]);
+                for (int bz = lo[2]; bz <= hi[2]; ++bz)
+                    for (int by = lo[1]; by <= hi[1]; ++by)
+                        for (int bx = lo[0]; bx <= hi[0]; ++bx)
+                            std::atomic_ref<unsigned char>(marks[bx + along[0] * (by + along[1] * bz)])
+                                .store(1, std::memory_order_relaxed);
+            }
+            lowest = std::min(lowest, first_block);
+            highest = std::max(highest, last_block);
+        }
+        chunk_blocks_[2 * chunk] = highest >= 0 ? lowest : -1;
+        chunk_blocks_[2 * chunk + 1] = highest;
+    }
+    if (outside > 0) {
+        std::string where;
+        for (int d = 0; d < D; ++d) where += (d ? ", " : "") + std::to_string(p.x[D * first_outside + d]);
+        throw std::runtime_error(std::to_string(outside) + " material point(s) left the grid, the first (point " +
+                                 std::to_string(first_outside) + ") at (" + where + ") m at t = " +
+                                 std::to_string(time_) + " s");
+    }
+    const double none[D] = {};
+    for (const auto& load : m_.surface_loads) {
+        double x[D];
+        face_of(load, x);
+        if (g.inside(x)) mark_blocks<D>(g, x, none, inv_h, marks);
+    }
+    g.set_active_blocks(block_marks_);
+    // Blocks are stored in block order: a chunk's blocks lie between its first's and last's slots.
+    for (int chunk = 0; chunk < chunks; ++chunk)
+        if (chunk_blocks_[2 * chunk] >= 0)
+            for (int k = 0; k < 2; ++k) chunk_blocks_[2 * chunk + k] = g.slot_of_block(chunk_blocks_[2 * chunk + k]);
+}
+
+// Where a surface load acts: the point's face, x_p + F offset.
+template <int D>
+void MpmSolver<D>::face_of(const SurfaceLoad& load, double* x) const {
+    const auto& p = m_.particles;
+    for (int d = 0; d < D; ++d) {
+        x[d] = p.x[D * load.point + d];
+        for (int e = 0; e < D; ++e) x[d] += p.F[D * D * load.point + D * d + e] * load.offset[e];
+    }
+}
+
+template <int D>
+void MpmSolver<D>::build_stencil(long i) {
+    double half[D * D];
+    half_edges(i, half);
+    evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &m_.particles.x[D * i], half, stencil_[i],
+                      m_.particles.field[i]);
+}
+
+// Each chunk of points accumulates into its own buffer of `values` per stored node (all
+// fields), over the slots its points reach only; then the buffers are summed into `out`:
+// scatter without atomics, deterministic for a fixed thread count.
 template <int D>
 template <class Accumulate>
-void MpmSolver<D>::scatter(int fields, Accumulate&& accumulate, std::vector<double>& out) {
-    const std::size_t size = static_cast<std::size_t>(fields) * m_.grid.num_nodes();
-    const int threads = omp_get_max_threads();
-    thread_buffer_.resize(threads);
-    const long n = static_cast<long>(m_.particles.size());
-    int used = 1;  // threads that ran: only their buffers hold this step's sums
-#pragma omp parallel if (n > kParallelPoints)
-    {
-#pragma omp single
-        used = omp_get_num_threads();
-        auto& buf = thread_buffer_[omp_get_thread_num()];
-        buf.assign(size, 0.0);
-#pragma omp for schedule(static)
-        for (long i = 0; i < n; ++i) accumulate(i, buf.data());
+void MpmSolver<D>::scatter(int values, Accumulate&& accumulate, std::vector<double>& out) {
+    const int chunks = static_cast<int>(chunk_blocks_.size() / 2);
+    const std::size_t per_slot = static_cast<std::size_t>(values) * Grid<D>::kBlockNodes;
+    const std::size_t size = per_slot * m_.grid.active_blocks();
+    thread_buffer_.resize(chunks);
+#pragma omp parallel for schedule(static, 1) num_threads(chunks)
+    for (int chunk = 0; chunk < chunks; ++chunk) {
+        auto& buf = thread_buffer_[chunk];
+        const int first = chunk_blocks_[2 * chunk], last = chunk_blocks_[2 * chunk + 1];
+        if (first < 0) {
+            buf.clear();
+            continue;
+        }
+        buf.assign(per_slot * (last - first + 1), 0.0);
+        // Entry k of the grid is buf[k - first slot's first entry].
+        double* base = buf.data() - per_slot * first;
+        for (long i = chunk_begin(chunk, chunks); i < chunk_begin(chunk + 1, chunks); ++i) accumulate(i, base);
+    }
+    if (chunks == 1 && chunk_blocks_[0] == 0 && thread_buffer_[0].size() == size) {
+        out.swap(thread_buffer_[0]);  // one chunk over every block: its sums are the result
+        return;
     }
     out.assign(size, 0.0);
-    for (int t = 0; t < used; ++t) {
-        const auto& buf = thread_buffer_[t];
-        for (std::size_t k = 0; k < size; ++k) out[k] += buf[k];
+    for (int chunk = 0; chunk < chunks; ++chunk) {
+        const auto& buf = thread_buffer_[chunk];
+        if (buf.empty()) continue;
+        double* into = out.data() + per_slot * chunk_blocks_[2 * chunk];
+        for (std::size_t k = 0; k < buf.size(); ++k) into[k] += buf[k];
     }
 }
 
+// Per grid entry: mass, momentum, total force, and (PointForces) the forces applied to points
+// (contact), which the external force of the equilibrium measure needs besides m_i g.
 template <int D>
-void MpmSolver<D>::particles_to_grid() {
+template <bool PointForces>
+void MpmSolver<D>::scatter_to_grid() {
     auto& p = m_.particles;
     auto& g = m_.grid;
-    constexpr int F = 1 + 3 * D;  // mass, momentum, total force, external force
+    constexpr int V = PointForces ? 1 + 3 * D : 1 + 2 * D;
+    const int fields = g.fields;
     // Each point's stencil is built here and used at once, while it is in cache.
-    scatter(F, [&](long i, double* buf) {
+    scatter(V * fields, [&](long i, double* buf) {
         build_stencil(i);
         const Stencil<D>& s = stencil_[i];
         // The point's loads, read once: the writes to buf could alias them otherwise.
         const double mass = p.mass[i], vol = p.volume[i];
         const double* sg = &p.stress[6 * i];
-        double VS[D][D], body[D], v[D], C[D * D];  // vol x stress rows [xx xy xz; xy yy yz; xz yz zz]
+        double VS[D][D], body[D], v[D], C[D * D], applied[D];  // vol x stress rows [xx xy xz; xy yy yz; xz yz zz]
         VS[0][0] = vol * sg[0];
         VS[1][1] = vol * sg[1];
         VS[0][1] = VS[1][0] = vol * sg[3];
@@ -185,52 +339,61 @@ void MpmSolver<D>::particles_to_grid() {
             VS[0][2] = VS[2][0] = vol * sg[5];
         }
         for (int d = 0; d < D; ++d) {
-            body[d] = mass * m_.gravity[d] + p.external_force[D * i + d];
+            applied[d] = p.external_force[D * i + d];
+            body[d] = mass * m_.gravity[d] + applied[d];
             v[d] = p.v[D * i + d];
         }
         for (int k = 0; k < D * D; ++k) C[k] = p.C[D * D * i + k];
         const double hoop_force = m_.axisymmetric ? vol * sg[2] : 0.0;
         for (int k = 0; k < s.count; ++k) {
-            double* b = buf + F * s.e[k].node;
+            double* b = buf + V * s.e[k].node;
             const double N = s.e[k].N;
             b[0] += N * mass;
             double vn[D];
             velocity_toward_node(s, k, v, C, vn);
             for (int d = 0; d < D; ++d) {
                 b[1 + d] += N * mass * vn[d];
-                const double external = N * body[d];
-                double f = external;
+                double f = N * body[d];
                 for (int e = 0; e < D; ++e) f -= VS[d][e] * s.e[k].dN[e];
                 b[1 + D + d] += f;
-                b[1 + 2 * D + d] += external;
+                if constexpr (PointForces) b[1 + 2 * D + d] += N * applied[d];
             }
             if (hoop_force != 0.0) b[1 + D] -= hoop_force * s.hoop[k];  // hoop stress on f_r (axisymmetric)
         }
     }, scratch_);
-    const int nn = g.num_nodes();
-    for (int n = 0; n < nn; ++n) {
-        g.mass[n] = scratch_[F * n];
+    const int nf = g.stored_nodes() * fields;
+    external_.resize(D * nf);
+    for (int k = 0; k < nf; ++k) {
+        const double* b = &scratch_[V * k];
+        g.mass[k] = b[0];
         for (int d = 0; d < D; ++d) {
-            g.momentum[D * n + d] = scratch_[F * n + 1 + d];
-            g.force[D * n + d] = scratch_[F * n + 1 + D + d];
+            g.momentum[D * k + d] = b[1 + d];
+            g.force[D * k + d] = b[1 + D + d];
+            external_[D * k + d] = b[0] * m_.gravity[d];
+            if constexpr (PointForces) external_[D * k + d] += b[1 + 2 * D + d];
         }
     }
-    external_.resize(D * nn);
-    for (int n = 0; n < nn; ++n)
-        for (int d = 0; d < D; ++d) external_[D * n + d] = scratch_[F * n + 1 + 2 * D + d];
-    // Surface loads at the loaded faces (few points: serial).
+}
+
+template <int D>
+void MpmSolver<D>::particles_to_grid() {
+    auto& p = m_.particles;
+    auto& g = m_.grid;
+    if (std::any_of(p.external_force.begin(), p.external_force.end(), [](double f) { return f != 0.0; }))
+        scatter_to_grid<true>();
+    else
+        scatter_to_grid<false>();
+    // Surface loads at the loaded faces (few points: serial), on the point's field.
     Stencil<D> at_face;
     for (const auto& load : m_.surface_loads) {
         double x[D];
-        for (int d = 0; d < D; ++d) {
-            x[d] = p.x[D * load.point + d];
-            for (int e = 0; e < D; ++e) x[d] += p.F[D * D * load.point + D * d + e] * load.offset[e];
-        }
-        evaluate_shape<D>(g, ShapeKind::Linear, false, x, nullptr, at_face);
+        face_of(load, x);
+        evaluate_shape<D>(g, ShapeKind::Linear, false, x, nullptr, at_face, p.field[load.point]);
         for (int k = 0; k < at_face.count; ++k)
             for (int d = 0; d < D; ++d) {
-                g.force[D * at_face.e[k].node + d] += at_face.e[k].N * load.force[d];
-                external_[D * at_face.e[k].node + d] += at_face.e[k].N * load.force[d];
+                const int at = D * at_face.e[k].node + d;
+                g.force[at] += at_face.e[k].N * load.force[d];
+                external_[at] += at_face.e[k].N * load.force[d];
             }
     }
 }
@@ -238,63 +401,82 @@ void MpmSolver<D>::particles_to_grid() {
 template <int D>
 void MpmSolver<D>::update_grid(double dt) {
     auto& g = m_.grid;
-    const int nn = g.num_nodes();
-    const double tiny = 1e-12 * (mass_ / std::max(1, nn));
+    const int fields = g.fields, nodes = g.stored_nodes(), nf = nodes * fields;
+    const double tiny = empty_node_mass();
     double unbalanced = 0.0, applied = 0.0;
-    residual_.assign(D * nn, 0.0);
-    for (int n = 0; n < nn; ++n) {
-        const double mass = g.mass[n];
-        for (int d = 0; d < D; ++d) {
-            const int k = D * n + d;
-            if (mass <= tiny) {
-                g.velocity[k] = g.acceleration[k] = g.reaction[k] = 0.0;
-                continue;
+    residual_.assign(D * nf, 0.0);
+    for (int n = 0; n < nodes; ++n) {
+        NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
+        if (cond) std::fill(cond->reaction, cond->reaction + 3, 0.0);
+        for (int f = 0; f < fields; ++f) {
+            const int nodef = n * fields + f;
+            const double mass = g.mass[nodef];
+            for (int d = 0; d < D; ++d) {
+                const int k = D * nodef + d;
+                if (mass <= tiny) {
+                    g.velocity[k] = g.acceleration[k] = 0.0;
+                    continue;
+                }
+                const double v0 = g.momentum[k] / mass;
+                double force = g.force[k];
+                if (cond && cond->fixed[d]) {
+                    // The force the support (or moving boundary) exerts to hold v: from the
+                    // undamped nodal force, so damping never shows up as a reaction.
+                    cond->reaction[d] += mass * (cond->prescribed[d] - v0) / dt - force;
+                    g.velocity[k] = cond->prescribed[d];
+                    g.acceleration[k] = (cond->prescribed[d] - v0) / dt;
+                    continue;
+                }
+                residual_[k] = force;  // what equilibrium must bring to zero (walls add their reaction)
+                applied += external_[k] * external_[k];
+                // Cundall's local damping: a force against the motion, in proportion to the
+                // unbalanced force, so equilibrium is reached without a global viscosity.
+                if (m_.local_damping > 0.0 && v0 != 0.0)
+                    force -= m_.local_damping * std::abs(force) * (v0 > 0.0 ? 1.0 : -1.0);
+                // Absorbing dashpot taken at mid-step: stable for any impedance.
+                const double c = cond ? cond->dashpot[d] : 0.0;
+                double v1 = ((mass / dt - 0.5 * c) * v0 + force) / (mass / dt + 0.5 * c);
+                if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
+                external_work_ += 0.5 * external_[k] * (v0 + v1) * dt;
+                g.velocity[k] = v1;
+                g.acceleration[k] = (v1 - v0) / dt;
             }
-            const double v0 = g.momentum[k] / mass;
-            double f = g.force[k];
-            if (g.fixed[k]) {
-                // The force the support (or moving boundary) exerts to hold v: from the
-                // undamped nodal force, so damping never shows up as a reaction.
-                g.reaction[k] = mass * (g.prescribed[k] - v0) / dt - f;
-                g.velocity[k] = g.prescribed[k];
-                g.acceleration[k] = (g.prescribed[k] - v0) / dt;
-                continue;
-            }
-            residual_[k] = f;  // what equilibrium must bring to zero (walls add their reaction)
-            applied += external_[k] * external_[k];
-            // Cundall's local damping: a force against the motion, in proportion to the
-            // unbalanced force, so equilibrium is reached without a global viscosity.
-            if (m_.local_damping > 0.0 && v0 != 0.0) f -= m_.local_damping * std::abs(f) * (v0 > 0.0 ? 1.0 : -1.0);
-            // Absorbing dashpot taken at mid-step: stable for any impedance.
-            const double c = g.dashpot[k];
-            double v1 = ((mass / dt - 0.5 * c) * v0 + f) / (mass / dt + 0.5 * c);
-            g.reaction[k] = 0.0;
-            if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
-            external_work_ += 0.5 * external_[k] * (v0 + v1) * dt;
-            g.velocity[k] = v1;
-            g.acceleration[k] = (v1 - v0) / dt;
         }
     }
-    for (int n = 0; n < nn; ++n) {
-        if (g.wall[n] < 0 || g.mass[n] <= tiny) continue;
-        double v[D];
-        for (int d = 0; d < D; ++d) v[d] = g.velocity[D * n + d];
-        apply_wall<D>(g.wall[n], g.wall_friction[n], v);
-        for (int d = 0; d < D; ++d) {
-            const int k = D * n + d;
-            const double push = g.mass[n] * (v[d] - g.velocity[k]) / dt;  // the wall's push and friction
-            g.reaction[k] += push;
-            residual_[k] += push;
-            g.acceleration[k] += (v[d] - g.velocity[k]) / dt;
-            g.velocity[k] = v[d];
+    for (int n = 0; n < nodes; ++n) {
+        if (g.condition_at[n] < 0) continue;
+        NodeCondition& cond = g.conditions[g.condition_at[n]];
+        if (cond.wall < 0) continue;
+        for (int f = 0; f < fields; ++f) {
+            const int nodef = n * fields + f;
+            if (g.mass[nodef] <= tiny) continue;
+            double v[D];
+            for (int d = 0; d < D; ++d) v[d] = g.velocity[D * nodef + d];
+            apply_wall<D>(cond.wall, cond.wall_friction, v);
+            for (int d = 0; d < D; ++d) {
+                const int k = D * nodef + d;
+                const double push = g.mass[nodef] * (v[d] - g.velocity[k]) / dt;  // the wall's push and friction
+                cond.reaction[d] += push;
+                residual_[k] += push;
+                g.acceleration[k] += (v[d] - g.velocity[k]) / dt;
+                g.velocity[k] = v[d];
+            }
         }
     }
-    for (int k = 0; k < D * nn; ++k)
-        if (!g.fixed[k] && g.mass[k / D] > tiny) unbalanced += residual_[k] * residual_[k];
+    for (int n = 0; n < nodes; ++n) {
+        const NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
+        for (int f = 0; f < fields; ++f) {
+            const int nodef = n * fields + f;
+            if (g.mass[nodef] <= tiny) continue;
+            for (int d = 0; d < D; ++d)
+                if (!(cond && cond->fixed[d])) unbalanced += residual_[D * nodef + d] * residual_[D * nodef + d];
+        }
+    }
     unbalanced_ratio_ = applied > 0.0 ? std::sqrt(unbalanced / applied) : 0.0;
 }
 
-// Point i takes its velocity (FLIP/PIC blend or APIC) and position from the updated grid.
+// Point i takes its velocity (FLIP/PIC blend or APIC) and position from the updated grid,
+// from its own velocity field.
 template <int D>
 void MpmSolver<D>::grid_to_point(long i, double dt) {
     auto& p = m_.particles;
@@ -302,17 +484,21 @@ void MpmSolver<D>::grid_to_point(long i, double dt) {
     prefetch_stencil(stencil_, i);
     const Stencil<D>& s = stencil_[i];
     double a[D] = {}, vg[D] = {};
-    for (int k = 0; k < s.count; ++k)
+    for (int k = 0; k < s.count; ++k) {
+        const int at = D * s.e[k].node;
         for (int d = 0; d < D; ++d) {
-            a[d] += s.e[k].N * g.acceleration[D * s.e[k].node + d];
-            vg[d] += s.e[k].N * g.velocity[D * s.e[k].node + d];
+            a[d] += s.e[k].N * g.acceleration[at + d];
+            vg[d] += s.e[k].N * g.velocity[at + d];
         }
+    }
     if (m_.apic) {
         double* C = &p.C[D * D * i];
         for (int k = 0; k < D * D; ++k) C[k] = 0.0;
-        for (int k = 0; k < s.count; ++k)
+        for (int k = 0; k < s.count; ++k) {
+            const int at = D * s.e[k].node;
             for (int a = 0; a < D; ++a)
-                for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[D * s.e[k].node + a] * s.e[k].dN[b];
+                for (int b = 0; b < D; ++b) C[D * a + b] += g.velocity[at + a] * s.e[k].dN[b];
+        }
     }
     const double flip = m_.flip;
     for (int d = 0; d < D; ++d) {
@@ -333,29 +519,35 @@ template <int D>
 void MpmSolver<D>::update_points_and_remap(double dt) {
     auto& p = m_.particles;
     auto& g = m_.grid;
-    scatter(D, [&](long i, double* buf) {
+    const int fields = g.fields;
+    scatter(D * fields, [&](long i, double* buf) {
         grid_to_point(i, dt);
         const Stencil<D>& s = stencil_[i];
         const double* C = &p.C[D * D * i];
         for (int k = 0; k < s.count; ++k) {
             double vn[D];
             velocity_toward_node(s, k, &p.v[D * i], C, vn);
-            for (int d = 0; d < D; ++d) buf[D * s.e[k].node + d] += s.e[k].N * p.mass[i] * vn[d];
+            double* b = buf + D * s.e[k].node;
+            for (int d = 0; d < D; ++d) b[d] += s.e[k].N * p.mass[i] * vn[d];
         }
     }, scratch_);
-    const int nn = g.num_nodes();
-    const double tiny = 1e-12 * (mass_ / std::max(1, nn));
-    for (int n = 0; n < nn; ++n)
-        for (int d = 0; d < D; ++d) {
-            const int k = D * n + d;
-            g.velocity[k] = g.fixed[k] ? g.prescribed[k] : (g.mass[n] > tiny ? scratch_[k] / g.mass[n] : 0.0);
+    const int nodes = g.stored_nodes();
+    const double tiny = empty_node_mass();
+    for (int n = 0; n < nodes; ++n) {
+        const NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
+        for (int f = 0; f < fields; ++f) {
+            const int nodef = n * fields + f;
+            for (int d = 0; d < D; ++d) {
+                const int k = D * nodef + d;
+                g.velocity[k] = cond && cond->fixed[d] ? cond->prescribed[d]
+                                                       : (g.mass[nodef] > tiny ? scratch_[k] / g.mass[nodef] : 0.0);
+            }
+            // The remapped velocities may not enter a wall either (friction was applied above).
+            if (cond && cond->wall >= 0) {
+                double& vn = g.velocity[D * nodef + cond->wall / 2];
+                if (cond->wall % 2 == 0 ? vn < 0.0 : vn > 0.0) vn = 0.0;
+            }
         }
-    // The remapped velocities may not enter a wall either (friction was applied above).
-    for (int n = 0; n < nn; ++n) {
-        if (g.wall[n] < 0) continue;
-        const int axis = g.wall[n] / 2;
-        double& vn = g.velocity[D * n + axis];
-        if (g.wall[n] % 2 == 0 ? vn < 0.0 : vn > 0.0) vn = 0.0;
     }
 }
 
@@ -439,13 +631,32 @@ void MpmSolver<D>::update_stress(double dt) {
 
 template <int D>
 void MpmSolver<D>::step(double dt) {
-    check_points_inside();
+    activate_grid();
     particles_to_grid();
     update_grid(dt);
     update_points_and_remap(dt);
     update_stress(dt);
     time_ += dt;
     ++steps_;
+}
+
+template <int D>
+MpmMemory MpmSolver<D>::memory() const {
+    const auto& g = m_.grid;
+    MpmMemory mem;
+    mem.points = m_.particles.size();
+    mem.stored_nodes = static_cast<std::size_t>(g.stored_nodes());
+    mem.grid_nodes = static_cast<std::size_t>(g.num_nodes());
+    mem.bytes_per_point = m_.particles.bytes_per_point() + sizeof(Stencil<D>);
+    // external_ and residual_ (D per field), and the scatter's result and chunk buffers as
+    // allocated (before the first step: one chunk over every block).
+    std::size_t scatter = scratch_.capacity();
+    for (const auto& b : thread_buffer_) scatter += b.capacity();
+    const std::size_t nodes = std::max<std::size_t>(1, mem.stored_nodes);
+    if (scatter == 0) scatter = 2 * nodes * g.fields * (1 + 2 * D);
+    mem.bytes_per_stored_node = g.bytes_per_stored_node() + 2 * D * g.fields * sizeof(double) +
+                                (scatter * sizeof(double) + nodes - 1) / nodes;
+    return mem;
 }
 
 template <int D>

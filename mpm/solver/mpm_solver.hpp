@@ -4,6 +4,7 @@
 // grid (mass, momentum, forces), grid update with boundary conditions, grid to particles,
 // the momentum mapped back (MUSL), the velocity gradient, the Jaumann-rotated stress update
 // by each material's model in one batch.
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -48,16 +49,29 @@ struct SolverState {
     double external_work = 0.0;    // J, work of the external forces (gravity, surface loads)
 };
 
+// Memory of a run: per point (its arrays and its stored stencil) and per stored grid node
+// (node data, the solver's per-node arrays and one scatter buffer per thread).
+struct MpmMemory {
+    std::size_t points = 0, stored_nodes = 0, grid_nodes = 0;
+    std::size_t bytes_per_point = 0, bytes_per_stored_node = 0;
+    std::size_t total_bytes() const { return points * bytes_per_point + stored_nodes * bytes_per_stored_node; }
+};
+
 template <int D>
 class MpmSolver {
 public:
     explicit MpmSolver(MpmModel<D>& model);
     double stable_time_step() const;
     void step(double dt);
+    // Stores the grid blocks the points reach (each step does it first); throws when a point
+    // has left the grid.
+    void activate_grid();
 
     double time() const { return time_; }
     long steps() const { return steps_; }
     double kinetic_energy() const;
+    // As stored after the last step (or the first activation).
+    MpmMemory memory() const;
     std::array<double, D> momentum() const;
     double total_mass() const;
     // ||unbalanced force|| / ||external force|| over the grid nodes of the last step.
@@ -80,15 +94,23 @@ public:
 
 private:
     void velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C, double* out) const;
-    void check_points_inside() const;
+    // A node lighter than this holds no material: a fraction of a point's mean mass, so that
+    // the threshold does not depend on how large the grid is.
+    double empty_node_mass() const {
+        return 1e-12 * mass_ / static_cast<double>(std::max<std::size_t>(1, m_.particles.size()));
+    }
+    void half_edges(long i, double* half) const;
+    void face_of(const SurfaceLoad& load, double* x) const;
     void build_stencil(long i);
     void particles_to_grid();
+    template <bool PointForces>
+    void scatter_to_grid();
     void update_grid(double dt);
     void grid_to_point(long i, double dt);
     void update_points_and_remap(double dt);
     void update_stress(double dt);
     template <class Accumulate>
-    void scatter(int fields, Accumulate&& accumulate, std::vector<double>& out);
+    void scatter(int values, Accumulate&& accumulate, std::vector<double>& out);
 
     MpmModel<D>& m_;
     std::vector<Stencil<D>> stencil_;
@@ -96,8 +118,14 @@ private:
     std::vector<int> tensor_states_;  // per material: symmetric tensors rotated with the stress
     std::vector<std::vector<double>> thread_buffer_;
     std::vector<double> scratch_;
-    std::vector<double> external_;  // D per node: gravity and tractions, for the equilibrium measure
-    std::vector<double> residual_;  // D per node: unbalanced force after the walls' reaction
+    std::vector<unsigned char> block_marks_;
+    std::vector<int> chunk_blocks_;  // per chunk of points: first and last slot its points reach (-1: none)
+    // Chunk c of `chunks` is the points [chunk_begin(c), chunk_begin(c + 1)).
+    long chunk_begin(int chunk, int chunks) const {
+        return static_cast<long>(m_.particles.size()) * chunk / chunks;
+    }
+    std::vector<double> external_;  // D per stored node and field: gravity and tractions (equilibrium measure)
+    std::vector<double> residual_;  // D per stored node and field: unbalanced force after the walls' reaction
     double time_ = 0.0;
     double mass_ = 0.0;
     long steps_ = 0;

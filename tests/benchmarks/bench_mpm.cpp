@@ -12,14 +12,16 @@ using namespace pilempm::mpm;
 
 namespace {
 
-// A block of soil on a fixed base under gravity, 2 points per cell per direction.
+// A block of soil on a fixed base under gravity, 2 points per cell per direction. With
+// `spread` > 1 the grid is that many times wider (each horizontal axis) and taller than the
+// soil: a body in a mostly empty box, as a pile-driving domain's far field or a collapse.
 template <int D>
-MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb) {
+MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb, int spread = 1) {
     MpmModel<D> m;
     for (int d = 0; d < D; ++d) {
         m.grid.origin[d] = 0.0;
         m.grid.spacing[d] = 0.25;
-        m.grid.cells[d] = d == D - 1 ? cells_across + 4 : cells_across;
+        m.grid.cells[d] = spread * (d == D - 1 ? cells_across + 4 : cells_across);
     }
     m.grid.allocate();
     m.shape = shape;
@@ -28,7 +30,12 @@ MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb) {
     else m.materials.push_back(std::make_unique<LinearElastic>(20e6, 0.3));
     m.particles.state_stride = m.materials.front()->num_state();
     const double top = 0.25 * cells_across;
-    fill_region<D>(m.grid, m.particles, [top](const double* x) { return x[D - 1] < top; }, 2, 2000.0, 0, false);
+    const double width = 0.25 * cells_across;
+    fill_region<D>(m.grid, m.particles, [top, width](const double* x) {
+        for (int d = 0; d < D - 1; ++d)
+            if (x[d] > width) return false;
+        return x[D - 1] < top;
+    }, 2, 2000.0, 0, false);
     apply_boundary<D>(m.grid, D - 1, 0, BoundaryKind::Fixed);
     for (int d = 0; d < D - 1; ++d) {
         apply_boundary<D>(m.grid, d, 0, BoundaryKind::Roller);
@@ -38,9 +45,9 @@ MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb) {
 }
 
 template <int D>
-void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells, bool apic = false) {
+void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells, bool apic = false, int spread = 1) {
     omp_set_num_threads(static_cast<int>(state.range(0)));
-    MpmModel<D> m = block<D>(cells, shape, mohr_coulomb);
+    MpmModel<D> m = block<D>(cells, shape, mohr_coulomb, spread);
     m.apic = apic;
     MpmSolver<D> solver(m);
     const double dt = solver.stable_time_step();
@@ -56,9 +63,14 @@ void BM_Mpm2dElasticGimp(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false
 void BM_Mpm2dElasticGimpApic(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100, true); }
 void BM_Mpm2dMohrCoulombCpdi(benchmark::State& s) { run<2>(s, ShapeKind::CPDI, true, 100); }
 void BM_Mpm3dElasticGimp(benchmark::State& s) { run<3>(s, ShapeKind::GIMP, false, 20); }
+// The same bodies in boxes 4 x 4 (2D) and 3 x 3 x 3 (3D) times their size.
+void BM_Mpm2dElasticGimpSparse(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100, false, 4); }
+void BM_Mpm3dElasticGimpSparse(benchmark::State& s) { run<3>(s, ShapeKind::GIMP, false, 20, false, 3); }
 BENCHMARK(BM_Mpm2dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm2dElasticGimpApic)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm2dMohrCoulombCpdi)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm3dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Mpm2dElasticGimpSparse)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Mpm3dElasticGimpSparse)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace

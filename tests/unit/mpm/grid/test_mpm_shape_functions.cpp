@@ -19,6 +19,7 @@ Grid<D> grid() {
         g.cells[d] = 8;
     }
     g.allocate();
+    g.activate_all();
     return g;
 }
 
@@ -32,7 +33,7 @@ void check_consistency(ShapeKind kind, bool axisymmetric, const double* x, const
     double sumN = 0.0, sum_hoop_r = 0.0;
     double sum_dN[D] = {}, grad_x[D][D] = {};
     for (int k = 0; k < s.count; ++k) {
-        const auto c = g.ijk(s.e[k].node);
+        const auto c = g.stored_ijk(s.e[k].node);
         sumN += s.e[k].N;
         for (int d = 0; d < D; ++d) {
             sum_dN[d] += s.e[k].dN[d];
