@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 
@@ -70,6 +71,27 @@ std::vector<VerificationCheck> convergence_checks(const io::MpmCase& c,
                             "order of convergence of the error from the coarsest to the finest grid");
         k.at_least = true;
         k.passed = std::isfinite(order) && order >= min_order;
+        out.push_back(k);
+    }
+    // Self-convergence of the quantities whose limit is not the reference (verification.
+    // self_converging): from the three finest grids, refined by the same ratio r,
+    // log(|q_2 - q_1| / |q_3 - q_2|) / log r, at least min_order.
+    std::vector<std::size_t> order(factors.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return factors[a] < factors[b]; });
+    if (order.size() < 3) return out;
+    const std::size_t g1 = order[order.size() - 3], g2 = order[order.size() - 2], g3 = order.back();
+    for (std::size_t i = 0; i < by_grid[g1].size(); ++i) {
+        const std::string base = by_grid[g1][i].name.substr(0, by_grid[g1][i].name.find("_grid_"));
+        if (std::find(c.self_converging.begin(), c.self_converging.end(), base) == c.self_converging.end()) continue;
+        const double d12 = std::abs(by_grid[g2][i].computed - by_grid[g1][i].computed);
+        const double d23 = std::abs(by_grid[g3][i].computed - by_grid[g2][i].computed);
+        const double r = factors[g2] / factors[g1];
+        const double p = d23 > 0.0 ? std::log(d12 / d23) / std::log(r) : std::numeric_limits<double>::infinity();
+        auto k = make_check(base + "_self_convergence_order", p, min_order, 0.0, false,
+                            "log(|q2 - q1| / |q3 - q2|) / log(refinement) over the three finest grids");
+        k.at_least = true;
+        k.passed = !std::isnan(p) && p >= min_order;
         out.push_back(k);
     }
     return out;

@@ -83,6 +83,7 @@ struct MpmCase : CaseFile {
     std::vector<double> grid_sequence;           // refinement factors the checks are rerun at
     std::array<bool, 3> refined_axes{true, true, true};  // the axes the sequence refines
     std::vector<std::string> converging;         // checks whose errors must converge on them
+    std::vector<std::string> self_converging;    // checks whose values must converge (to any limit)
 };
 
 MpmCase read_mpm_case(const std::string& file);

@@ -244,11 +244,16 @@ MpmCase read_mpm_case(const std::string& file) {
                 }
         }
         // The errors (names as in verification.json) whose order of convergence is checked.
-        if (v->has("converging")) {
-            if (c.grid_sequence.empty()) v->fail("converging", "a grid_sequence to converge on", "none");
-            const YAML::Node list = v->raw("converging");
-            if (!list.IsSequence()) v->fail("converging", "a list of check names", describe(list));
-            for (std::size_t i = 0; i < list.size(); ++i) c.converging.push_back(list[i].as<std::string>());
+        for (const char* key : {"converging", "self_converging"}) {
+            if (!v->has(key)) continue;
+            if (c.grid_sequence.empty()) v->fail(key, "a grid_sequence to converge on", "none");
+            const std::string k = key;
+            if (k == "self_converging" && c.grid_sequence.size() < 2)
+                v->fail(key, "a grid_sequence of three grids or more (with the case's own)", "two");
+            const YAML::Node list = v->raw(key);
+            if (!list.IsSequence()) v->fail(key, "a list of check names", describe(list));
+            auto& names = k == "converging" ? c.converging : c.self_converging;
+            for (std::size_t i = 0; i < list.size(); ++i) names.push_back(list[i].as<std::string>());
         }
         v->finish();
     }

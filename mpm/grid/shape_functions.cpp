@@ -347,6 +347,21 @@ void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, cons
     // Stored nodes to grid entries: the point's own velocity field at each node.
     if (grid.fields > 1)
         for (int k = 0; k < s.count; ++k) s.e[k].node = s.e[k].node * grid.fields + field;
+    // APIC carries v + C (x_node - s.x) to the nodes; it conserves momentum only when
+    // sum_k N_k (x_k - s.x) = 0. With the r-weighted axisymmetric weights the weights'
+    // centroid sum_k N_k x_k / sum_k N_k lies outside the point, by l^2 / (3 r) along r for a
+    // uGIMP domain of half-length l: the affine term taken about the point itself then adds
+    // radial momentum C (l^2 / 3r) every step, strongest at the axis. It is taken about the
+    // centroid instead.
+    if (axisymmetric && s.count > 0) {
+        double w = 0.0, c[D] = {};
+        for (int k = 0; k < s.count; ++k) {
+            w += s.e[k].N;
+            for (int d = 0; d < D; ++d) c[d] += s.e[k].N * grid.position[D * s.e[k].node + d];
+        }
+        if (w > 0.0)
+            for (int d = 0; d < D; ++d) s.x[d] = c[d] / w;
+    }
 }
 
 template struct Stencil<2>;

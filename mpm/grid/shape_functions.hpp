@@ -25,7 +25,7 @@ struct Stencil {
     int count = 0;
     Entry e[kMax];
     double hoop[kMax];  // axisymmetric only (not written otherwise: nothing reads it)
-    double x[D];        // where the point was when the stencil was built
+    double x[D];        // centre of the affine (APIC) term: the point, or in axisymmetry the weights' centroid
     void clear() { count = 0; }
     int slot(int n);    // the entry for node n, created zeroed if new (searches: CPDI)
     int append(int n);  // a new entry for a node known not to be there yet (linear, GIMP)

@@ -35,3 +35,12 @@ pilempm_case_test(verify_element_test_subloading_cam_clay cases/element-tests/su
 pilempm_case_test(verify_element_test_subloading_cam_clay_ocr4 cases/element-tests/subloading-cam-clay-fontainebleau-ocr4.yaml verification)
 pilempm_case_test(verify_element_test_hardening_soil_small cases/element-tests/hardening-soil-small-north-sea-dense-sand.yaml verification)
 pilempm_case_test(verify_mpm_k0_hardening_soil_small cases/verification/mpm-k0-hardening-soil-small.yaml verification)
+# Full-size runs (label long, not in CI: ctest --test-dir build -L long).
+# Granular column collapse, Mohr-Coulomb: the final height against Lube et al. on grid
+# sequences of three (11-17 min each on one core).
+pilempm_case_test(long_collapse_plane_strain_a05 cases/examples/column-collapse-plane-strain-a05.yaml long)
+pilempm_case_test(long_collapse_axisymmetric_a05 cases/examples/column-collapse-axisymmetric-a05.yaml long)
+pilempm_case_test(long_collapse_plane_strain_a2 cases/examples/column-collapse-plane-strain-a2.yaml long)
+pilempm_case_test(long_collapse_axisymmetric_a2 cases/examples/column-collapse-axisymmetric-a2.yaml long)
+# The energy-levels drivability study with its bearing graph.
+pilempm_case_test(long_drivability_energy_levels cases/drivability/north-sea-monopile-energy-levels.yaml long)

@@ -115,6 +115,40 @@ TEST(MpmShapeFunctions, GimpIsSmoothAcrossACellFace) {
             if (s.e[k].node == node) return s.e[k].dN[0];
         return 0.0;
     };
-    const int node = g.node({3, 3});
-    EXPECT_NEAR(grad_x_of(a, node), grad_x_of(b, node), 1e-6);
+    // Every node of the row, the neighbours' gradients (about 1/h) among them.
+    for (int i = 1; i <= 5; ++i) {
+        const int node = g.index({i, 3});
+        EXPECT_NEAR(grad_x_of(a, node), grad_x_of(b, node), 1e-6) << "node " << i;
+    }
+    EXPECT_GT(std::abs(grad_x_of(a, g.index({2, 3}))), 0.5);
+}
+
+TEST(MpmShapeFunctions, AxisymmetricApicCentreIsTheWeightsCentroid) {
+    // APIC carries v + C (x_node - s.x) to the nodes: the momentum it adds, m C sum_k N_k
+    // (x_k - s.x), must be nil. The r-weighted axisymmetric weights have their centroid
+    // outside the point (by l^2 / (3 r) along r for uGIMP), so s.x is that centroid.
+    const Grid<2> g = grid<2>();
+    const double half[4] = {0.125, 0.0, 0.0, 0.1};
+    const double sheared[4] = {0.12, 0.03, -0.02, 0.09};
+    for (const double r : {0.125, 0.2, 0.6, 2.3}) {
+        const double x[2] = {r, 1.23};
+        for (ShapeKind kind : {ShapeKind::Linear, ShapeKind::GIMP, ShapeKind::CPDI}) {
+            Stencil<2> s;
+            evaluate_shape<2>(g, kind, true, x, kind == ShapeKind::CPDI ? sheared : half, s);
+            double moment[2] = {0.0, 0.0};
+            for (int k = 0; k < s.count; ++k) {
+                const auto c = g.stored_ijk(s.e[k].node);
+                for (int d = 0; d < 2; ++d) moment[d] += s.e[k].N * (g.coordinate(d, c[d]) - s.x[d]);
+            }
+            EXPECT_NEAR(moment[0], 0.0, 1e-12);
+            EXPECT_NEAR(moment[1], 0.0, 1e-12);
+            if (kind == ShapeKind::GIMP) {
+                EXPECT_NEAR(s.x[0], r + 0.125 * 0.125 / (3.0 * r), 1e-12);  // uGIMP: int s^2 ds / int s ds
+                EXPECT_NEAR(s.x[1], x[1], 1e-12);
+            }
+            if (kind == ShapeKind::Linear) {
+                EXPECT_NEAR(s.x[0], r, 1e-12);  // unweighted: the point
+            }
+        }
+    }
 }
