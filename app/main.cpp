@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/jobs/drivability_job.hpp"
+#include "app/jobs/drivability_study_job.hpp"
 #include "app/jobs/element_test_job.hpp"
 #include "app/jobs/mpm_job.hpp"
 #include "app/jobs/pile_wave_job.hpp"
@@ -18,7 +19,8 @@ namespace {
 constexpr const char* kUsage = R"(pilempm - pile driving simulator (pile wave analysis, drivability, MPM-FEM)
 
 The case file's `analysis:` key selects what runs: pile_wave (one blow travelling down
-the pile), drivability (SRD and blow count against depth), mpm (the MPM soil) or
+the pile), drivability (SRD and blow count against depth), drivability_study (the same
+at many field locations against their driving records), mpm (the MPM soil) or
 element_test (one soil element along laboratory paths).
 
 Usage:
@@ -85,6 +87,9 @@ int main(int argc, char** argv) {
             return command == "check" ? pilempm::app::check_mpm_case(case_file)
                                       : pilempm::app::run_mpm_case(case_file, out_dir, quiet, resume);
         if (resume) return usage_error("--resume applies to MPM runs, which write checkpoints");
+        if (kind == "drivability_study")
+            return command == "check" ? pilempm::app::check_drivability_study_case(case_file)
+                                      : pilempm::app::run_drivability_study_case(case_file, out_dir, quiet);
         const bool drivability = kind == "drivability";
         if (command == "check")
             return drivability ? pilempm::app::check_drivability_case(case_file)

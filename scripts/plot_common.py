@@ -56,3 +56,15 @@ def read_columns(path, names):
     if not cols[names[0]]:
         raise InputError(f"{path}: no data rows")
     return cols
+
+
+def run_main(prog, argv, plot):
+    """`prog OUT_DIR`: calls plot(out_dir) and turns input errors into exit status 2."""
+    if len(argv) != 2:
+        print(f"usage: {prog} OUT_DIR", file=sys.stderr)
+        return 2
+    try:
+        return plot(argv[1]) or 0
+    except (OSError, ValueError, KeyError, InputError) as e:
+        print(f"{prog}: {e}", file=sys.stderr)
+        return 2

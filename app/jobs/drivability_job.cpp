@@ -1,5 +1,6 @@
 #include "app/jobs/drivability_job.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -68,6 +69,19 @@ io::JsonObject summary_json(const io::DrivabilityCase& c, const coupling::Drivab
         .add("depth_step_m", c.depth_step).add("pile_mass_kg", s.pile_mass)
         .add("qc_correlation", std::string(c.soil.cpt.depth.empty() ? "Baldi et al. (1986), normally consolidated sand: q_c = 157 sigma'_v0^0.55 exp(2.41 D_R) (kPa)"
                                                                     : "CPT record " + c.cpt_file));
+    if (c.cpt_soil) {
+        std::vector<io::JsonObject> corr;
+        for (const auto& line : coupling::cpt_correlations(c.cpt_options)) {
+            io::JsonObject j;
+            j.add("correlation", line);
+            corr.push_back(j);
+        }
+        o.add("cpt_profile_file", std::string("cpt_profile.csv")).add("cpt_correlations", corr)
+            .add("cpt_points_smoothed", static_cast<double>(c.cpt_interpretation.smoothed_points));
+    }
+    if (!s.energy_plan_depth.empty())
+        o.add("energy_plan", c.energy_plan_source)
+            .add("energy_plan_depth_m", s.energy_plan_depth).add("energy_plan_fraction", s.energy_plan_level);
     if (c.rated_energy > 0.0) o.add("rated_energy_J", c.rated_energy);
     std::vector<io::JsonObject> runs;
     double worst_c = 0.0, worst_t = 0.0;
@@ -128,8 +142,24 @@ int check_drivability_case(const std::string& file) {
     std::printf("  hammer         %s\n", c.hammer_description.c_str());
     std::printf("  soil           %zu layers, water depth %.1f m, q_c %s\n", c.soil.layers.size(), c.soil.water_depth,
                 c.soil.cpt.depth.empty() ? "from D_R (Baldi et al. 1986)" : "from the CPT record");
-    for (const auto& l : c.soil.layers)
-        std::printf("                 %6.2f - %6.2f m  %s  %s\n", l.top, l.bottom, type_name(l.type), l.name.c_str());
+    if (c.cpt_soil) {
+        // Derived layers come one per CPT depth: show the sand and clay runs instead.
+        std::printf("                 from the CPT %s (%d points smoothed):\n", c.cpt_file.c_str(),
+                    c.cpt_interpretation.smoothed_points);
+        const auto& L = c.soil.layers;
+        for (std::size_t a = 0, b = 0; a < L.size(); a = b) {
+            while (b < L.size() && L[b].type == L[a].type) ++b;
+            std::printf("                 %6.2f - %6.2f m  %s\n", L[a].top, L[b - 1].bottom, type_name(L[a].type));
+        }
+    } else {
+        for (const auto& l : c.soil.layers)
+            std::printf("                 %6.2f - %6.2f m  %s  %s\n", l.top, l.bottom, type_name(l.type), l.name.c_str());
+    }
+    if (!s.energy_plan_depth.empty())
+        std::printf("  energy plan    %zu points from %s, %.0f%% to %.0f%% of the rated energy\n",
+                    s.energy_plan_depth.size(), c.energy_plan_source.c_str(),
+                    100 * *std::min_element(s.energy_plan_level.begin(), s.energy_plan_level.end()),
+                    100 * *std::max_element(s.energy_plan_level.begin(), s.energy_plan_level.end()));
     std::printf("  soil cases     ");
     for (const auto& sc : c.cases)
         std::printf("%s (%s x %.2f)  ", sc.name.c_str(), coupling::srd_method_name(sc.method), sc.factor);
@@ -154,6 +184,8 @@ int run_drivability_case(const std::string& file, const fs::path& out_dir, bool 
     for (const auto& run : result.runs) tables.push_back(run.table);
     if (result.bearing_graph.rows() > 0) tables.push_back(result.bearing_graph);
     for (const auto& t : tables) io::write_csv(staged.path() / (t.name + ".csv"), t);
+    if (c.cpt_soil)
+        io::write_csv(staged.path() / "cpt_profile.csv", coupling::cpt_profile_table(c.cpt_interpretation, "cpt_profile"));
 
     io::JsonObject summary = summary_json(c, setup, result);
     if (!c.verification_checks.empty()) {

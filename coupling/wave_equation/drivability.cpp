@@ -71,6 +71,18 @@ ResistanceDistribution bearing_graph_resistance(const DrivabilitySetup& s, doubl
     return r;
 }
 
+double planned_energy_level(const DrivabilitySetup& s, double depth, double level) {
+    const auto& z = s.energy_plan_depth;
+    const auto& e = s.energy_plan_level;
+    if (z.empty()) return level;
+    if (z.size() != e.size()) throw std::invalid_argument("energy plan: depths and energies differ in number");
+    if (depth <= z.front()) return level * e.front();
+    if (depth >= z.back()) return level * e.back();
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(z.begin(), z.end(), depth) - z.begin());
+    const double w = (depth - z[i - 1]) / (z[i] - z[i - 1]);
+    return level * ((1.0 - w) * e[i - 1] + w * e[i]);
+}
+
 fem::HammerSpec scaled_hammer(const fem::HammerSpec& h, double level) {
     fem::HammerSpec out = h;
     const double f = std::sqrt(level);
@@ -92,12 +104,12 @@ struct Task {
 Table drivability_table(const std::string& name) {
     return Table(name, {"depth_m", "srd_shaft_N", "srd_toe_N", "srd_total_N", "set_per_blow_m",
                         "blows_per_0.25m", "cumulative_blows", "max_compression_Pa", "max_tension_Pa",
-                        "enthru_J", "peak_head_force_N", "blows_simulated", "steady", "refusal"});
+                        "enthru_J", "peak_head_force_N", "blows_simulated", "steady", "refusal", "energy_level"});
 }
 
 // Cumulative blows by the trapezoidal rule in depth, and the run's summary figures.
-void summarise(DrivabilityRun& run, const std::vector<PenetrationResult>& points, double refusal,
-               double hard) {
+void summarise(DrivabilityRun& run, const std::vector<PenetrationResult>& points,
+               const std::vector<double>& levels, double refusal, double hard) {
     double cumulative = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const auto& p = points[i];
@@ -109,7 +121,7 @@ void summarise(DrivabilityRun& run, const std::vector<PenetrationResult>& points
         run.table.add_row({p.penetration, p.srd_shaft, p.srd_toe, p.srd_shaft + p.srd_toe, p.set,
                            p.blows_per_quarter_metre, cumulative, p.last.max_compression_stress,
                            p.last.max_tension_stress, p.last.enthru, p.last.peak_head_force,
-                           static_cast<double>(p.blows), p.steady ? 1.0 : 0.0, p.refusal ? 1.0 : 0.0});
+                           static_cast<double>(p.blows), p.steady ? 1.0 : 0.0, p.refusal ? 1.0 : 0.0, levels[i]});
         if (run.refusal_depth < 0.0) {
             run.final_depth_reached = p.penetration;
             run.total_blows = cumulative;
@@ -168,11 +180,13 @@ DrivabilityResult run_drivability(const DrivabilitySetup& s, const DrivabilityPr
     }
     std::vector<Task> tasks;
     std::vector<std::vector<PenetrationResult>> points(result.runs.size());
+    std::vector<std::vector<double>> levels(result.runs.size());
+    const int cases_per_level = static_cast<int>(s.energy_levels.size());
     for (std::size_t r = 0; r < result.runs.size(); ++r) {
         points[r].resize(depths[r].size());
+        for (double z : depths[r]) levels[r].push_back(planned_energy_level(s, z, s.energy_levels[r % cases_per_level]));
         for (std::size_t i = 0; i < depths[r].size(); ++i) tasks.push_back({static_cast<int>(r), static_cast<int>(i)});
     }
-    const int cases_per_level = static_cast<int>(s.energy_levels.size());
     long done = 0;
     const long total = static_cast<long>(tasks.size());
     if (s.threads > 0) omp_set_num_threads(s.threads);
@@ -182,7 +196,7 @@ DrivabilityResult run_drivability(const DrivabilitySetup& s, const DrivabilityPr
         try {
             const Task task = tasks[t];
             const SoilCase& c = s.cases[task.run / cases_per_level];
-            const double level = s.energy_levels[task.run % cases_per_level];
+            const double level = levels[task.run][task.point];
             const double depth = depths[task.run][task.point];
             const auto srd = srd_for_driving(s, c, depth);
             points[task.run][task.point] = drive_at_penetration(
@@ -200,7 +214,7 @@ DrivabilityResult run_drivability(const DrivabilitySetup& s, const DrivabilityPr
     if (failure) std::rethrow_exception(failure);
 
     for (std::size_t r = 0; r < result.runs.size(); ++r) {
-        summarise(result.runs[r], points[r], s.driving.refusal_blow_count, s.hard_driving_blow_count);
+        summarise(result.runs[r], points[r], levels[r], s.driving.refusal_blow_count, s.hard_driving_blow_count);
         for (const auto& p : points[r]) result.blows_simulated += p.blows;
     }
     result.depth_points = total;

@@ -35,6 +35,9 @@ struct DrivabilitySetup {
     double ram_element_size = 0.5;
     double hammer_weight = 0.0;        // N resting on the pile (helmet, sleeve): self-weight penetration
     std::vector<double> energy_levels = {1.0};  // fractions of the hammer's energy
+    // Driving plan: the fraction of the hammer's energy against depth (piecewise linear,
+    // constant beyond its ends), scaled by each energy level. Empty: 1 at every depth.
+    std::vector<double> energy_plan_depth, energy_plan_level;
     double start_depth = -1.0;         // m; negative: from the self-weight penetration
     double final_depth = 0.0;          // m
     double depth_step = 0.25;          // m
@@ -80,6 +83,9 @@ ResistanceDistribution srd_for_driving(const DrivabilitySetup& s, const SoilCase
 // Bearing-graph soil: `r_u` (N) on a uniform shaft (bearing_shaft_fraction) and the toe at
 // the bearing-graph penetration, with the shaft damping of each layer's soil type.
 ResistanceDistribution bearing_graph_resistance(const DrivabilitySetup& s, double r_u);
+
+// The fraction of the hammer's energy used at `depth`: `level` x the driving plan there.
+double planned_energy_level(const DrivabilitySetup& s, double depth, double level);
 
 // Hammer with its energy scaled by `level` (impact velocity or pulse force x sqrt(level)).
 fem::HammerSpec scaled_hammer(const fem::HammerSpec& h, double level);

@@ -208,6 +208,32 @@ SrdModes stevens_modes(const SoilProfile& soil, const SrdCoefficients& k, const 
     return {sample_shaft(soil, p, spacing, faces), stevens_end_bearing(soil_point(soil, p))};
 }
 
+// Unified (Lehane et al. 2020): coring faces; the plug's base is checked in compute_srd.
+SrdModes unified_coring_modes(const SoilProfile& soil, const SrdCoefficients& k, const Pipe& pipe,
+                              double p, double spacing) {
+    const double are = unified_effective_area_ratio(pipe.d_outer, pipe.d_inner, k.cone_diameter);
+    auto faces = [&](const SoilPoint& s, double z) {
+        const double h = p - z;
+        const double f = s.layer->type == SoilType::Sand
+                             ? unified_sand_shaft_friction(s.qt, s.sigma_v, s.layer->interface_friction_angle, h,
+                                                           pipe.d_outer, are, k.cone_diameter)
+                             : unified_clay_shaft_friction(s.qt, h, pipe.d_outer, pipe.d_inner,
+                                                           k.unified_clay_shaft_factor);
+        return Faces{f * kPi * pipe.d_outer, k.unified_inside_share * f * kPi * pipe.d_inner};
+    };
+    // The annulus bears like a cone: the averaged q_c in sand, Alm & Hamre's 0.6 q_t in clay.
+    const double q = average_cone_resistance(soil, p, k.toe_averaging_diameters * pipe.d_outer);
+    const bool sand = soil.layer_at(p).type == SoilType::Sand;
+    return {sample_shaft(soil, p, spacing, faces), sand ? q : alm_hamre_clay_end_bearing(q)};
+}
+
+// The plugged base over the gross area: (0.12 + 0.38 A_re) q_p in sand, 9 s_u in clay.
+double unified_plug_base(const SoilProfile& soil, const SrdCoefficients& k, const Pipe& pipe, double p) {
+    if (soil.layer_at(p).type == SoilType::Clay) return 9.0 * soil.undrained_shear_strength(p);
+    const double are = unified_effective_area_ratio(pipe.d_outer, pipe.d_inner, k.cone_diameter);
+    return unified_sand_base(average_cone_resistance(soil, p, k.toe_averaging_diameters * pipe.d_outer), are);
+}
+
 // Plugged when that mode resists less: the inside friction exceeds q on the plug area.
 bool stevens_plugs(const SrdModes& m, const Pipe& pipe, double p) {
     const double inside = integrate(m.shaft.depth, m.shaft.inside, p);
@@ -251,6 +277,8 @@ const char* srd_method_name(SrdMethod m) {
             return "stevens_lower_bound";
         case SrdMethod::StevensUpperBound:
             return "stevens_upper_bound";
+        case SrdMethod::Unified2020:
+            return "unified_2020";
     }
     return "unknown";
 }
@@ -279,6 +307,53 @@ double alm_hamre_clay_end_bearing(double qt) {
     return 0.6 * qt;
 }
 
+double unified_effective_area_ratio(double d_outer, double d_inner, double d_cone) {
+    const double plug_length_ratio = std::tanh(0.3 * std::sqrt(d_inner / d_cone));
+    return 1.0 - plug_length_ratio * (d_inner / d_outer) * (d_inner / d_outer);
+}
+
+double unified_sand_shaft_friction(double qc, double sigma_v, double delta_deg, double h, double d_outer,
+                                   double area_ratio, double d_cone) {
+    const double q = std::max(qc, 0.0);
+    const double radial = q / 44.0 * std::pow(area_ratio, 0.3) * std::pow(std::max(1.0, h / d_outer), -0.4);
+    const double dilation = q > 0.0 ? q / 10.0 * std::pow(q / guarded(sigma_v), -0.33) * d_cone / d_outer : 0.0;
+    return (radial + dilation) * tan_deg(delta_deg);
+}
+
+double unified_clay_shaft_friction(double qt, double h, double d_outer, double d_inner, double f_st) {
+    const double d_star = std::sqrt(d_outer * d_outer - d_inner * d_inner);
+    return 0.07 * f_st * std::max(qt, 0.0) * std::pow(std::max(1.0, h / d_star), -0.25);
+}
+
+double unified_sand_base(double qp, double area_ratio) {
+    return (0.12 + 0.38 * area_ratio) * std::max(qp, 0.0);
+}
+
+double average_cone_resistance(const SoilProfile& soil, double p, double half_width) {
+    double a = std::max(p - half_width, 0.0), b = p + half_width;
+    if (!soil.cpt.depth.empty() && p <= soil.cpt.depth.back()) b = std::min(b, soil.cpt.depth.back());
+    if (!(b > a)) return soil.cone_resistance(p);
+    // Trapezoids between the record's own depths are exact for the piecewise-linear
+    // record; without a record the correlation is sampled every 5 cm.
+    std::vector<double> z;
+    const int n = std::max(2, static_cast<int>(std::ceil((b - a) / 0.05)));
+    if (soil.cpt.depth.empty())
+        for (int i = 0; i <= n; ++i) z.push_back(a + (b - a) * i / n);
+    else {
+        z.push_back(a);
+        for (double d : soil.cpt.depth)
+            if (d > a && d < b) z.push_back(d);
+        z.push_back(b);
+    }
+    double sum = 0.0, prev = soil.cone_resistance(z[0]);
+    for (std::size_t i = 1; i < z.size(); ++i) {
+        const double q = soil.cone_resistance(z[i]);
+        sum += 0.5 * (prev + q) * (z[i] - z[i - 1]);
+        prev = q;
+    }
+    return sum / (b - a);
+}
+
 ApiSandLimits api_sand_limits(double delta_deg) {
     const double d = std::clamp(delta_deg, kApiSandTable.front().delta, kApiSandTable.back().delta);
     std::size_t i = 1;
@@ -301,6 +376,14 @@ ResistanceDistribution compute_srd(const SoilProfile& soil, SrdMethod method,
         // Alm & Hamre assume a coring pile: no plug check (spec 1.5).
         const SrdModes m = alm_hamre_modes(soil, k, pipe, penetration, spacing);
         return assemble(m, pipe, false, penetration, factor, details);
+    }
+    if (method == SrdMethod::Unified2020) {
+        SrdModes m = unified_coring_modes(soil, k, pipe, penetration, spacing);
+        const double plug = unified_plug_base(soil, k, pipe, penetration);
+        const double inside = integrate(m.shaft.depth, m.shaft.inside, penetration);
+        const bool plugged = plug * pipe.area_gross() < inside + m.toe_unit * pipe.area_annulus();
+        if (plugged) m.toe_unit = plug;
+        return assemble(m, pipe, plugged, penetration, factor, details);
     }
     const bool upper = method == SrdMethod::StevensUpperBound;
     const SrdModes m = stevens_modes(soil, k, pipe, penetration, spacing, upper);

@@ -3,19 +3,40 @@
 #include <string>
 #include <vector>
 
+#include "coupling/wave_equation/cpt_interpretation.hpp"
 #include "coupling/wave_equation/drivability.hpp"
 #include "io/cases/pile_hammer_input.hpp"
 
 namespace pilempm::io {
 
+// `analysis: drivability_study`: one drivability case run at many locations of a field
+// records file, each with its CPT, pile and hammer energy, against the measured blows.
+struct DrivabilityStudy {
+    std::string records;                    // path of the records CSV (io/cases/field_records.hpp)
+    std::vector<std::string> locations;     // empty: all
+    double stick_up = 10.0;                 // m of pile above the seabed at final penetration
+    double reference_energy = 0.0;          // J: normalised hammer energy x this = energy
+    std::string calibration_location;       // empty: no calibration
+    std::string calibration_soil_case = "best_estimate";
+    double calibration_low = 0.0, calibration_high = 0.0;  // J, bracket of reference_energy
+    std::string lower_case = "lower_bound", upper_case = "upper_bound";  // the band
+};
+
 struct DrivabilityCase : CaseFile, PileInput, HammerInput {
     coupling::SoilProfile soil;
     std::string cpt_file;
+    bool cpt_soil = false;                     // soil.cpt: layers derived from the sounding
+    coupling::CptInterpretationOptions cpt_options;
+    coupling::CptInterpretation cpt_interpretation;
+    std::string energy_plan_source;            // how the plan was given, for the summary
+    bool study_mode = false;
+    DrivabilityStudy study;
     coupling::SrdCoefficients coefficients;
     std::vector<coupling::SoilCase> cases;
     coupling::SmithParameters smith;
     double sand_shaft_damping = 0.16, clay_shaft_damping = 0.65;
     std::vector<double> energy_levels = {1.0};
+    std::vector<double> energy_plan_depth, energy_plan_level;  // fractions of the rated energy
     double start_depth = -1.0, final_depth = 0.0, depth_step = 0.25;
     double refusal_blow_count = 250.0, hard_driving_blow_count = 75.0;
     int max_blows = 8;
@@ -33,7 +54,7 @@ struct DrivabilityCase : CaseFile, PileInput, HammerInput {
 DrivabilityCase read_drivability_case(const std::string& file);
 coupling::DrivabilitySetup build_drivability_setup(const DrivabilityCase& c);
 
-// The `analysis` of a case file (pile_wave or drivability), checked.
+// The `analysis` of a case file (pile_wave, drivability, drivability_study, ...), checked.
 std::string read_analysis_kind(const std::string& file);
 
 }  // namespace pilempm::io

@@ -6,13 +6,14 @@
 
 #include "fem/mesh/rod_mesh.hpp"
 #include "io/cases/drivability_case.hpp"
+#include "io/cases/field_records.hpp"
 #include "io/yaml/numeric_file.hpp"
 #include "io/yaml/yaml_reader.hpp"
 
 namespace pilempm::io {
 namespace {
 
-const std::vector<std::string> kAnalyses = {"pile_wave", "drivability", "mpm", "element_test"};
+const std::vector<std::string> kAnalyses = {"pile_wave", "drivability", "drivability_study", "mpm", "element_test"};
 const std::vector<std::string> kChecks = {"static_push", "bearing_graph_monotonic",
                                           "blow_energy_balance", "danish_formula",
                                           "self_weight_penetration"};
@@ -20,6 +21,7 @@ const std::vector<std::string> kChecks = {"static_push", "bearing_graph_monotoni
 coupling::SrdMethod method_from(const std::string& name) {
     if (name == "alm_hamre_2001") return coupling::SrdMethod::AlmHamre2001;
     if (name == "stevens_lower_bound") return coupling::SrdMethod::StevensLowerBound;
+    if (name == "unified_2020") return coupling::SrdMethod::Unified2020;
     return coupling::SrdMethod::StevensUpperBound;
 }
 
@@ -53,8 +55,74 @@ coupling::SoilLayer read_layer(MapReader m, double expected_top) {
     return l;
 }
 
+// A file named under `key`, relative to the case file; a missing one names the key.
+std::string case_relative_file(MapReader& m, const std::string& key) {
+    std::filesystem::path p(m.text_or(key, ""));
+    if (p.is_relative()) p = std::filesystem::path(m.file()).parent_path() / p;
+    if (!std::filesystem::is_regular_file(p)) m.fail(key, "a readable CSV file", p.string() + " missing");
+    return p.string();
+}
+
+void read_cpt_options(MapReader& m, coupling::CptInterpretationOptions& o) {
+    o.net_area_ratio = m.number_or("net_area_ratio", 0.8, {"a net area ratio in (0, 1]",
+                                                           [](double x) { return x > 0.0 && x <= 1.0; }});
+    o.cone_factor = m.number_or("cone_factor", 15.0, positive("cone factor N_kt"));
+    o.min_layer_thickness = m.number_or("min_layer_thickness", 1.0, non_negative("thickness in m"));
+    o.interface_friction_angle =
+        m.number_or("interface_friction_angle", 29.0, in_open_range(0.0, 45.0, "an angle in degrees"));
+    o.clay_sensitivity = m.number_or("clay_sensitivity", 2.0, {"a sensitivity of at least 1", [](double x) { return x >= 1.0; }});
+    o.sand_clay_boundary = m.number_or("sand_clay_boundary", 2.6, in_open_range(1.0, 4.0, "an I_c value"));
+}
+
+// A CPT file with depth_m, qc_MPa, fs_MPa and u2_MPa columns (u2 optional), or a field
+// records file with `location`.
+coupling::CptSounding read_cpt_sounding(MapReader& m) {
+    const std::string path = case_relative_file(m, "file");
+    if (m.has("location")) {
+        const std::string loc = m.text_or("location", "");
+        try {
+            return read_field_records(path, {loc}).front().cpt;
+        } catch (const CaseError& e) {
+            m.fail("location", "a location of " + path + " with a complete record", "'" + loc + "': " + e.what());
+        }
+    }
+    const HeaderedCsv t = read_headered_csv(path);
+    coupling::CptSounding c;
+    c.depth = t.numbers("depth_m");
+    c.qc = t.numbers("qc_MPa");
+    c.fs = t.numbers("fs_MPa");
+    c.u2 = t.column("u2_MPa") >= 0 ? t.numbers("u2_MPa") : std::vector<double>(c.depth.size(), 0.0);
+    for (auto* col : {&c.qc, &c.fs, &c.u2})
+        for (double& x : *col) x *= 1e6;
+    return c;
+}
+
 void read_soil(MapReader m, DrivabilityCase& c) {
     c.soil.water_depth = m.number_or("water_depth", 0.0, non_negative("water depth in m"));
+    if (auto cpt = m.optional_map("cpt")) {
+        // The soil from the sounding alone: no layers, no q_t record beside it.
+        if (m.has("layers")) m.fail("layers", "no layers beside soil.cpt (they are derived from the CPT)");
+        if (m.has("cpt_file")) m.fail("cpt_file", "no cpt_file beside soil.cpt");
+        read_cpt_options(*cpt, c.cpt_options);
+        c.cpt_soil = true;
+        if (!c.study_mode) {
+            const coupling::CptSounding sounding = read_cpt_sounding(*cpt);
+            c.cpt_file = cpt->text_or("file", "");
+            try {
+                c.cpt_interpretation = coupling::interpret_cpt(sounding, c.cpt_options, c.soil.water_depth);
+            } catch (const std::invalid_argument& e) {
+                cpt->fail("file", "a usable CPT", e.what());
+            }
+            c.soil = c.cpt_interpretation.profile;
+        } else if (cpt->has("file")) {
+            cpt->fail("file", "no file in a study (each location's CPT comes from the records)");
+        }
+        cpt->finish();
+        c.soil.clay_cone_factor = c.cpt_options.cone_factor;
+        m.finish();
+        return;
+    }
+    if (c.study_mode) m.fail("cpt", "soil.cpt in a study: each location's soil comes from its CPT");
     double top = 0.0;
     for (auto l : m.maps("layers")) {
         c.soil.layers.push_back(read_layer(l, top));
@@ -87,7 +155,8 @@ void read_smith(MapReader m, DrivabilityCase& c) {
 }
 
 void read_cases(MapReader& root, DrivabilityCase& c) {
-    const std::vector<std::string> methods = {"alm_hamre_2001", "stevens_lower_bound", "stevens_upper_bound"};
+    const std::vector<std::string> methods = {"alm_hamre_2001", "stevens_lower_bound", "stevens_upper_bound",
+                                              "unified_2020"};
     if (!root.has("soil_cases")) {
         // The industry's usual three: Stevens lower bound, Alm & Hamre best estimate, and
         // Alm & Hamre x 1.25 as upper bound (their own recommendation).
@@ -108,15 +177,67 @@ void read_cases(MapReader& root, DrivabilityCase& c) {
     }
 }
 
+// The hammer energy against depth: a table (depth, energy) or the columns of a driving
+// log; energies are fractions of the rated energy, or multiples of `reference_energy` (J).
+void read_energy_plan(MapReader m, DrivabilityCase& c) {
+    std::vector<double> depth, energy;
+    if (m.has("file")) {
+        const std::string path = case_relative_file(m, "file");
+        const HeaderedCsv t = read_headered_csv(path);
+        const std::string dcol = m.text_or("depth_column", "depth_m");
+        const std::string ecol = m.text_or("energy_column", "energy_fraction");
+        for (const auto& col : {dcol, ecol})
+            if (t.column(col) < 0) m.fail(col == dcol ? "depth_column" : "energy_column",
+                                          "a column of " + path, "'" + col + "'");
+        const std::string loc = m.text_or("location", "");
+        const int lc = t.column("location");
+        if (!loc.empty() && lc < 0) m.fail("location", "a records file with a location column");
+        const auto d = t.numbers(dcol), e = t.numbers(ecol);
+        for (std::size_t r = 0; r < d.size(); ++r) {
+            if (!loc.empty() && t.rows[r][static_cast<std::size_t>(lc)] != loc) continue;
+            if (std::isnan(d[r]) || std::isnan(e[r])) continue;  // not driven there
+            depth.push_back(d[r]);
+            energy.push_back(e[r]);
+        }
+        c.energy_plan_source = path + (loc.empty() ? "" : " (" + loc + ")") + ", column " + ecol;
+    } else {
+        depth = m.numbers("depth", non_negative("depth in m"));
+        energy = m.numbers("energy", positive("an energy"));
+        c.energy_plan_source = "table in the case file";
+    }
+    if (depth.size() != energy.size() || depth.empty())
+        m.fail("energy", "as many energies as depths, at least one", std::to_string(energy.size()) + " for " +
+                                                                        std::to_string(depth.size()) + " depths");
+    for (std::size_t i = 1; i < depth.size(); ++i)
+        if (!(depth[i] > depth[i - 1])) m.fail("depth", "depths that increase", std::to_string(depth[i]) + " m");
+    const double reference = m.number_or("reference_energy", 0.0, non_negative("energy in J"));
+    if (reference > 0.0 && !(c.rated_energy > 0.0))
+        m.fail("reference_energy", "a hammer with a rated energy (a ram and a drop height)");
+    for (double& e : energy) {
+        if (reference > 0.0) e *= reference / c.rated_energy;
+        if (!(e > 0.0 && e <= 2.0))
+            m.fail("energy", "fractions of the rated energy in (0, 2]", std::to_string(e));
+    }
+    c.energy_plan_depth = depth;
+    c.energy_plan_level = energy;
+    m.finish();
+}
+
 void read_driving(MapReader m, DrivabilityCase& c) {
     const double L = c.length();
-    c.final_depth = m.number("final_depth", {"a depth within the pile length (" + std::to_string(L) + " m)",
-                                             [L](double d) { return d > 0.0 && d < L; }});
-    c.start_depth = m.number_or("start_depth", -1.0,
-                                {"a depth above the final depth", [fd = c.final_depth](double d) { return d >= 0.0 && d < fd; }});
+    if (!c.study_mode || m.has("final_depth"))
+        c.final_depth = m.number("final_depth", {"a depth within the pile length (" + std::to_string(L) + " m)",
+                                                 [L](double d) { return d > 0.0 && d < L; }});
+    if (!c.study_mode)
+        c.start_depth = m.number_or("start_depth", -1.0, {"a depth above the final depth",
+                                                          [fd = c.final_depth](double d) { return d >= 0.0 && d < fd; }});
     c.depth_step = m.number_or("depth_step", 0.25, positive("depth step in m"));
     if (m.has("energy_levels"))
         c.energy_levels = m.numbers("energy_levels", in_half_open_range(0.0, 2.0, "a fraction of the hammer energy"));
+    if (auto plan = m.optional_map("energy_plan")) {
+        if (c.study_mode) plan->fail("file", "no energy plan in a study (it comes from each location's record)");
+        read_energy_plan(std::move(*plan), c);
+    }
     c.refusal_blow_count = m.number_or("refusal_blow_count", 250.0, positive("blows per 0.25 m"));
     c.hard_driving_blow_count = m.number_or("hard_driving_blow_count", 75.0, positive("blows per 0.25 m"));
     c.max_blows = m.integer_or("max_blows", 8, 2);
@@ -132,10 +253,53 @@ std::string read_analysis_kind(const std::string& file) {
     return root.choice("analysis", kAnalyses);
 }
 
+void read_study(MapReader m, DrivabilityCase& c) {
+    DrivabilityStudy& s = c.study;
+    s.records = case_relative_file(m, "records");
+    if (m.has("locations")) {
+        const YAML::Node n = m.raw("locations");
+        if (!n.IsSequence() || n.size() == 0) m.fail("locations", "a list of location codes");
+        for (const auto& x : n) s.locations.push_back(x.as<std::string>());
+    }
+    try {
+        read_field_records(s.records, s.locations);
+    } catch (const CaseError& e) {
+        m.fail("records", "a field records file holding the locations", e.what());
+    }
+    s.stick_up = m.number_or("stick_up", 10.0, non_negative("length in m"));
+    s.reference_energy = m.number("reference_energy", positive("energy in J"));
+    if (!(c.rated_energy > 0.0)) m.fail("reference_energy", "a hammer with a rated energy (a ram and a drop height)");
+    if (auto cal = m.optional_map("calibration")) {
+        s.calibration_location = cal->text_or("location", "");
+        if (s.calibration_location.empty()) cal->fail("location", "the location the reference energy is fitted on");
+        s.calibration_soil_case = cal->text_or("soil_case", "best_estimate");
+        s.calibration_low = cal->number("low", positive("energy in J"));
+        s.calibration_high = cal->number("high", {"an energy above low", [lo = s.calibration_low](double x) { return x > lo; }});
+        cal->finish();
+    }
+    if (auto band = m.optional_map("band")) {
+        s.lower_case = band->text_or("lower", s.lower_case);
+        s.upper_case = band->text_or("upper", s.upper_case);
+        band->finish();
+    }
+    m.finish();
+}
+
+// The study's soil cases must include those its calibration and band name.
+void check_study_cases(MapReader& root, const DrivabilityCase& c) {
+    auto has = [&c](const std::string& n) {
+        return std::any_of(c.cases.begin(), c.cases.end(), [&n](const auto& k) { return k.name == n; });
+    };
+    const DrivabilityStudy& s = c.study;
+    for (const auto& n : {s.lower_case, s.upper_case, s.calibration_location.empty() ? s.lower_case : s.calibration_soil_case})
+        if (!has(n)) root.fail("soil_cases", "a soil case named '" + n + "' (the study's band or calibration uses it)");
+}
+
 DrivabilityCase read_drivability_case(const std::string& file) {
     MapReader root = load_yaml_file(file);
     DrivabilityCase c;
-    read_case_header(root, c, file, "drivability");
+    c.study_mode = root.has("analysis") && root.text_or("analysis", "") == "drivability_study";
+    read_case_header(root, c, file, c.study_mode ? "drivability_study" : "drivability");
     {
         MapReader pile = root.map("pile");
         if (pile.has("model") && pile.choice("model", {"rod", "axisymmetric"}) != "rod")
@@ -151,10 +315,18 @@ DrivabilityCase read_drivability_case(const std::string& file) {
         c.coefficients.stevens_k_upper = k->number_or("stevens_k_upper", 0.7, positive("earth pressure coefficient"));
         c.coefficients.alm_hamre_sand_inside = k->number_or("alm_hamre_sand_inside_share", 0.5, non_negative("share"));
         c.coefficients.alm_hamre_sand_outside = k->number_or("alm_hamre_sand_outside_share", 0.5, non_negative("share"));
+        c.coefficients.unified_inside_share = k->number_or("unified_inside_share", 1.0, non_negative("share"));
+        c.coefficients.unified_clay_shaft_factor = k->number_or("unified_clay_shaft_factor", 1.0, positive("factor F_st"));
+        c.coefficients.toe_averaging_diameters =
+            k->number_or("toe_averaging_diameters", 1.5, non_negative("half-width of the toe zone in diameters"));
         k->finish();
     }
     read_cases(root, c);
     read_driving(root.map("driving"), c);
+    if (c.study_mode) {
+        read_study(root.map("study"), c);
+        check_study_cases(root, c);
+    }
     if (auto b = root.optional_map("bearing_graph")) {
         c.bearing_resistances = b->numbers("resistances", positive("ultimate resistance in N"));
         c.bearing_shaft_fraction = b->number_or("shaft_fraction", 0.5,
@@ -204,6 +376,8 @@ coupling::DrivabilitySetup build_drivability_setup(const DrivabilityCase& c) {
     s.ram_element_size = c.element_size;
     s.hammer_weight = c.hammer_mass * c.gravity * (1.0 - 1025.0 / c.steel.density);
     s.energy_levels = c.energy_levels;
+    s.energy_plan_depth = c.energy_plan_depth;
+    s.energy_plan_level = c.energy_plan_level;
     s.start_depth = c.start_depth;
     s.final_depth = c.final_depth;
     s.depth_step = c.depth_step;

@@ -84,3 +84,31 @@ TEST(DrivabilityStudy, EnergyScalingKeepsTheHammerShape) {
     const auto half = scaled_hammer(h, 0.25);
     EXPECT_DOUBLE_EQ(half.ram_cushion.impact_velocity, 2.0);  // energy x 1/4 -> velocity x 1/2
 }
+
+TEST(DrivabilityStudy, EnergyPlanSetsEachDepthsEnergy) {
+    // A soft start: 30 % of the energy to 10 m, 100 % from 14 m, linear between. Each
+    // depth point must be the blow count of a constant-energy run at the planned level.
+    DrivabilitySetup plan = small_study();
+    plan.energy_plan_depth = {10.0, 14.0};
+    plan.energy_plan_level = {0.3, 1.0};
+    EXPECT_DOUBLE_EQ(planned_energy_level(plan, 5.0, 1.0), 0.3);
+    EXPECT_DOUBLE_EQ(planned_energy_level(plan, 12.0, 1.0), 0.65);
+    EXPECT_DOUBLE_EQ(planned_energy_level(plan, 20.0, 0.8), 0.8);
+    const auto r = run_drivability(plan);
+    const Table& t = r.runs.front().table;
+    const std::size_t level_col = t.columns.size() - 1;
+    ASSERT_EQ(t.columns[level_col], "energy_level");
+    for (double level : {0.3, 0.65, 1.0}) {
+        DrivabilitySetup constant = small_study();
+        constant.energy_levels = {level};
+        const auto rc = run_drivability(constant);
+        const Table& c = rc.runs.front().table;
+        for (std::size_t i = 0; i < t.rows(); ++i) {
+            if (std::abs(t.data[level_col][i] - level) > 1e-12) continue;
+            EXPECT_DOUBLE_EQ(t.data[5][i], c.data[5][i]) << "depth " << t.data[0][i];
+        }
+    }
+    // At 5 m, 30 % of the energy takes more blows than the full energy.
+    const auto full = run_drivability(small_study());
+    EXPECT_GT(t.data[5][0], full.runs.front().table.data[5][0]);
+}

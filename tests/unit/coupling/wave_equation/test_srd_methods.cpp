@@ -424,3 +424,72 @@ TEST(SrdStevens, ShortPileCoresLongPilePlugs) {
     EXPECT_LT(rl.total(), coring_total);
     expect_rel(rl.shaft_total(), longp.shaft_outside, 1e-12);
 }
+
+// ---- Lehane et al. (2020), the "unified" CPT method ------------------------------------
+
+// The worked example of OpenSees' TzSandCPT / QbSandCPT documentation (Gulf of Mexico
+// site A, checked there against the UWA online calculator): q_c = 39 928 kPa,
+// sigma'_v = 203.8 kPa, D = 2.44 m, t = 44.5 mm, h = 40 m: tau_f = 84.3 kPa in
+// compression; q_p = 50 MPa: q_b0.1 = 7.629 MPa.
+TEST(SrdUnified, PublishedWorkedExample) {
+    const double d = 2.44, di = 2.44 - 2 * 0.0445, dcpt = 0.0357;
+    const double are = unified_effective_area_ratio(d, di, dcpt);
+    expect_rel(are, 0.08577, 1e-3);
+    expect_rel(unified_sand_shaft_friction(39928 * kKpa, 203.8 * kKpa, 29.0, 40.0, d, are, dcpt), 84.3 * kKpa, 1e-3);
+    expect_rel(unified_sand_base(50e6, are), 7.629e6, 1e-3);
+    // Closed-ended: A_re = 1 (no inner diameter).
+    EXPECT_DOUBLE_EQ(unified_effective_area_ratio(d, 0.0, dcpt), 1.0);
+    // Clay: 0.07 q_t max(1, h/D*)^-0.25, D* = sqrt(D^2 - D_i^2).
+    const double dstar = std::sqrt(d * d - di * di);
+    expect_rel(unified_clay_shaft_friction(2e6, 10 * dstar, d, di, 1.0), 0.07 * 2e6 * std::pow(10.0, -0.25), 1e-12);
+    expect_rel(unified_clay_shaft_friction(2e6, 0.5 * dstar, d, di, 0.5), 0.5 * 0.07 * 2e6, 1e-12);
+}
+
+namespace {
+
+// Uniform sand with a CPT of constant q_c over 0..40 m.
+SoilProfile uniform_cpt_sand(double qc) {
+    SoilProfile s = uniform_dense_sand();
+    s.cpt.depth = {0.0, 40.0};
+    s.cpt.qt = {qc, qc};
+    s.cpt.fs = {0.1e6, 0.1e6};
+    return s;
+}
+
+}  // namespace
+
+TEST(SrdUnified, ToeAverageOfAStepIsItsMean) {
+    SoilProfile s = uniform_dense_sand();
+    s.cpt.depth = {0.0, 10.0, 10.0 + 1e-6, 40.0};
+    s.cpt.qt = {10e6, 10e6, 30e6, 30e6};
+    s.cpt.fs = {0.1e6, 0.1e6, 0.1e6, 0.1e6};
+    // +- 1.5 D of a 2 m pile about the step: half at 10 MPa, half at 30 MPa.
+    expect_rel(average_cone_resistance(s, 10.0, 3.0), 20e6, 2e-3);
+    // Clipped at the mudline: 0..4 m, all 10 MPa.
+    expect_rel(average_cone_resistance(s, 1.0, 3.0), 10e6, 1e-9);
+}
+
+TEST(SrdUnified, CoringOrPluggedWhicheverResistsLess) {
+    const double qc = 30e6, d = 2.48, wall = 0.055, di = d - 2 * wall;
+    const SoilProfile s = uniform_cpt_sand(qc);
+    const double annulus = kPi / 4 * (d * d - di * di), gross = kPi / 4 * d * d;
+    const double are = unified_effective_area_ratio(d, di, 0.0357);
+    // No inner friction: coring (annulus x q_c = 0.419 m^2 q_c) resists less than the plug
+    // ((0.12 + 0.38 A_re) q_c over 4.83 m^2 = 0.75 m^2 q_c).
+    SrdCoefficients k;
+    k.unified_inside_share = 0.0;
+    SrdDetails a;
+    const auto coring = compute_srd(s, SrdMethod::Unified2020, k, d, wall, 20.0, 0.1, 1.0, &a);
+    EXPECT_FALSE(a.plugged);
+    expect_rel(coring.toe, annulus * qc, 1e-9);
+    EXPECT_DOUBLE_EQ(a.shaft_inside, 0.0);
+    // Inner friction as large as the outer: the plugged base governs.
+    k.unified_inside_share = 1.0;
+    SrdDetails b;
+    const auto plugged = compute_srd(s, SrdMethod::Unified2020, k, d, wall, 20.0, 0.1, 1.0, &b);
+    EXPECT_TRUE(b.plugged);
+    expect_rel(plugged.toe, (0.12 + 0.38 * are) * qc * gross, 1e-9);
+    expect_rel(b.shaft_outside, a.shaft_outside, 1e-12);
+    EXPECT_LT(b.toe, a.toe + b.shaft_outside * di / d);  // it was the smaller mode
+    EXPECT_STREQ(srd_method_name(SrdMethod::Unified2020), "unified_2020");
+}

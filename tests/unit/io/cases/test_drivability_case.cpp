@@ -1,0 +1,113 @@
+// Drivability case input: the soil from a CPT, the energy plan from a driving log, the
+// study section; bad combinations are CaseErrors naming the key.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "io/cases/drivability_case.hpp"
+#include "io/cases/field_records.hpp"
+#include "io/yaml/case_error.hpp"
+
+using namespace pilempm;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kData = std::string(PILEMPM_SOURCE_DIR) + "/cases/drivability/data/isfog2020/records.csv";
+
+const char* kHead = R"(title: test
+analysis: drivability
+pile:
+  segments:
+    - {length: 37.0, outer_diameter: 2.48, wall_thickness: 0.055}
+  steel: {youngs_modulus: 210.0e9, poisson_ratio: 0.3, density: 7850.0}
+  element_size: 0.5
+hammer:
+  type: ram_cushion
+  ram: {mass: 60.0e3, model: rigid}
+  drop_height: 2.0
+  efficiency: 0.95
+  helmet_mass: 30.0e3
+)";
+
+std::string write_case(const std::string& body, const std::string& head = kHead) {
+    static int n = 0;
+    const fs::path p = fs::temp_directory_path() /
+                       ("pilempm-drivability-case-" + std::to_string(::getpid()) + "-" + std::to_string(++n) + ".yaml");
+    std::ofstream(p) << head << body;
+    return p.string();
+}
+
+std::string error_of(const std::string& file) {
+    try {
+        io::read_drivability_case(file);
+    } catch (const io::CaseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(DrivabilityCase, SoilAndEnergyPlanFromTheRecords) {
+    const std::string f = write_case("soil:\n  water_depth: 30\n  cpt: {file: " + kData + ", location: BG}\n"
+                                     "driving:\n  final_depth: 26.0\n  depth_step: 0.5\n"
+                                     "  energy_plan: {file: " + kData + ", location: BG, energy_column: "
+                                     "normalised_hammer_energy, reference_energy: 1.0e6}\n");
+    const io::DrivabilityCase c = io::read_drivability_case(f);
+    EXPECT_TRUE(c.cpt_soil);
+    EXPECT_EQ(c.soil.layers.size(), 79u);  // one per CPT depth
+    EXPECT_EQ(c.soil.cpt.depth.size(), 79u);
+    const auto bg = io::read_field_records(kData, {"BG"}).front();
+    ASSERT_EQ(c.energy_plan_depth.size(), bg.driven_depth.size());
+    const double rated = 60e3 * 9.81 * 2.0;
+    EXPECT_NEAR(c.energy_plan_level.front(), bg.normalised_energy.front() * 1e6 / rated, 1e-12);
+    EXPECT_NEAR(c.energy_plan_level.back(), bg.normalised_energy.back() * 1e6 / rated, 1e-12);
+    const auto s = io::build_drivability_setup(c);
+    EXPECT_EQ(s.energy_plan_depth, c.energy_plan_depth);
+    fs::remove(f);
+}
+
+TEST(DrivabilityCase, CptBesideLayersIsRefused) {
+    const std::string f = write_case("soil:\n  cpt: {file: " + kData + ", location: BG}\n  layers:\n"
+                                     "    - {top: 0, bottom: 30, type: sand, submerged_unit_weight: 1e4, "
+                                     "relative_density: 0.5, interface_friction_angle: 25}\n"
+                                     "driving: {final_depth: 26.0}\n");
+    EXPECT_NE(error_of(f).find("soil.layers"), std::string::npos) << error_of(f);
+    fs::remove(f);
+}
+
+TEST(DrivabilityCase, UnknownLocationAndBadPlanNameTheirKeys) {
+    const std::string a = write_case("soil:\n  cpt: {file: " + kData + ", location: ZZ}\ndriving: {final_depth: 26.0}\n");
+    EXPECT_NE(error_of(a).find("soil.cpt.location"), std::string::npos) << error_of(a);
+    const std::string b = write_case("soil:\n  cpt: {file: " + kData + ", location: BG}\n"
+                                     "driving:\n  final_depth: 26.0\n  energy_plan: {depth: [1, 0.5], energy: [0.5, 0.6]}\n");
+    EXPECT_NE(error_of(b).find("driving.energy_plan.depth"), std::string::npos) << error_of(b);
+    const std::string c = write_case("soil:\n  cpt: {file: " + kData + ", location: BG}\n"
+                                     "driving:\n  final_depth: 26.0\n  energy_plan: {depth: [1, 2], energy: [0.5]}\n");
+    EXPECT_NE(error_of(c).find("driving.energy_plan.energy"), std::string::npos) << error_of(c);
+    for (const auto& f : {a, b, c}) fs::remove(f);
+}
+
+TEST(DrivabilityCase, StudyNeedsItsBandAndCalibrationCases) {
+    std::string head = kHead;
+    head.replace(head.find("analysis: drivability"), 21, "analysis: drivability_study");
+    const std::string f = write_case("soil:\n  cpt: {net_area_ratio: 0.8}\ndriving: {depth_step: 0.5}\n"
+                                     "soil_cases:\n  - {name: best_estimate, method: alm_hamre_2001}\n"
+                                     "study:\n  records: " + kData + "\n  reference_energy: 1.0e6\n",
+                                     head);
+    EXPECT_NE(error_of(f).find("soil_cases"), std::string::npos) << error_of(f);
+    const std::string g = write_case("soil:\n  cpt: {net_area_ratio: 0.8}\ndriving: {depth_step: 0.5}\n"
+                                     "soil_cases:\n  - {name: lower_bound, method: stevens_lower_bound}\n"
+                                     "  - {name: upper_bound, method: unified_2020}\n"
+                                     "study:\n  records: " + kData + "\n  locations: [BG, AA]\n  reference_energy: 1.0e6\n",
+                                     head);
+    const io::DrivabilityCase c = io::read_drivability_case(g);
+    EXPECT_TRUE(c.study_mode);
+    EXPECT_EQ(c.study.locations, (std::vector<std::string>{"BG", "AA"}));
+    EXPECT_EQ(c.cases.back().method, coupling::SrdMethod::Unified2020);
+    fs::remove(f);
+    fs::remove(g);
+}
