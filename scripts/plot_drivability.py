@@ -15,6 +15,7 @@ observed points and bearing_graph_file) and the CSV files it names.
 
 Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
 """
+import csv
 import json
 import math
 import os
@@ -96,6 +97,7 @@ def read_summary(out_dir):
         "hard": number(summary, "hard_driving_blow_count", path, default=75.0),
         "observed": read_observed(summary.get("observed"), path),
         "bearing_file": summary.get("bearing_graph_file"),
+        "rated_energy_J": summary.get("rated_energy_J") if isinstance(summary.get("rated_energy_J"), (int, float)) else None,
         "runs": [],
     }
     if out["bearing_file"] is not None and not isinstance(out["bearing_file"], str):
@@ -121,6 +123,11 @@ def read_summary(out_dir):
         if out["runs"][-1]["refusal_depth"] is not None and out["runs"][-1]["refusal_depth"] < 0:
             out["runs"][-1]["refusal_depth"] = None
     return out
+
+
+def has_column(path, name):
+    with open(path, newline="") as f:
+        return name in (next(csv.reader(f), []) or [])
 
 
 def percent(level):
@@ -275,8 +282,14 @@ def plot_drivability(out_dir, summary):
     for run in runs:
         observed += run["observed"]
 
-    fig, axes = plt.subplots(1, 4, figsize=(16, 9), sharey=True)
-    ax_srd, ax_blows, ax_cum, ax_stress = axes
+    # A driving plan (energy varying with depth) gets a fifth panel: the energy used.
+    energies = []
+    for run in runs:
+        e = plot_common.read_columns(run["file"], ["energy_level"]) if has_column(run["file"], "energy_level") else None
+        energies.append(np.asarray(e["energy_level"], dtype=float) if e else None)
+    planned = any(e is not None and np.nanmax(e) - np.nanmin(e) > 1e-12 for e in energies)
+    fig, axes = plt.subplots(1, 5 if planned else 4, figsize=(19 if planned else 16, 9), sharey=True)
+    ax_srd, ax_blows, ax_cum, ax_stress = axes[:4]
 
     # Depth range shared by all panels, 0 (seabed) at the top.
     max_depth = finite_max(*[r["data"]["depth_m"] for r in runs],
@@ -359,6 +372,17 @@ def plot_drivability(out_dir, summary):
                               Line2D([], [], color="0.3", lw=1.3, ls="--")],
                      labels=["compression", "tension"], loc="best", fontsize=9,
                      framealpha=0.9)
+
+    if planned:
+        ax_e = axes[4]
+        rated = summary.get("rated_energy_J")
+        for i, e in enumerate(energies):
+            if e is not None:
+                x = e * rated * 1e-3 if rated else e * 100
+                ax_e.plot(x, runs[i]["data"]["depth_m"], color=colors[i], lw=1.6)
+        ax_e.set_xlim(left=0)
+        ax_e.set_xlabel("Hammer energy (kJ)" if rated else "Hammer energy (% of rated)")
+        ax_e.set_title("(e) Energy used", fontsize=11)
 
     for ax in axes:
         ax.set_ylim(depth_bottom, 0.0)  # depth axis points down

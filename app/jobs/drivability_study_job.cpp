@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "app/jobs/verification_runner.hpp"
 #include "coupling/wave_equation/field_comparison.hpp"
 #include "io/cases/drivability_study_setup.hpp"
 #include "io/writers/csv_writer.hpp"
@@ -26,6 +27,7 @@ struct LocationResult {
     io::StudyLocation location;
     coupling::DrivabilityResult result;
     std::vector<coupling::Comparison> comparisons;  // one per soil case
+    std::vector<coupling::Comparison> above, below; // the same above and below study.split_depth
     double in_band = kNaN;                          // share of depths inside the band
 };
 
@@ -64,7 +66,12 @@ LocationResult run_location(const io::DrivabilityCase& c, const io::FieldRecord&
     std::vector<coupling::PredictedDriving> predicted;
     for (const auto& sc : out.location.setup.cases) {
         predicted.push_back(coupling::predicted_from_table(run_of(out.result, sc.name).table));
-        out.comparisons.push_back(coupling::compare_driving(predicted.back(), out.location.measured));
+        const auto& m = out.location.measured;
+        out.comparisons.push_back(coupling::compare_driving(predicted.back(), m));
+        if (c.study.split_depth > 0.0) {
+            out.above.push_back(coupling::compare_driving(predicted.back(), m.between(0.0, c.study.split_depth)));
+            out.below.push_back(coupling::compare_driving(predicted.back(), m.between(c.study.split_depth, 1e9)));
+        }
     }
     auto index = [&](const std::string& n) {
         for (std::size_t k = 0; k < out.location.setup.cases.size(); ++k)
@@ -177,7 +184,8 @@ int run_drivability_study_case(const std::string& file, const fs::path& out_dir,
                           "abs_ln_ratio", "profile_correlation", "share_inside_band", "first_driven_depth_m",
                           "last_driven_depth_m", "self_weight_penetration_with_hammer_m", "calibration_location"});
     std::vector<std::vector<std::string>> text(3);
-    std::vector<std::vector<coupling::Comparison>> per_case(c.cases.size());
+    std::vector<std::vector<coupling::Comparison>> per_case(c.cases.size()), above(c.cases.size()),
+        below(c.cases.size());
     std::vector<double> band;
     for (const auto& l : results) {
         const auto& rec = l.location.record;
@@ -191,7 +199,12 @@ int run_drivability_study_case(const std::string& file, const fs::path& out_dir,
             text[0].push_back(rec.location);
             text[1].push_back(c.cases[k].name);
             text[2].push_back(coupling::srd_method_name(c.cases[k].method));
-            if (!cal) per_case[k].push_back(cmp);
+            if (cal) continue;
+            per_case[k].push_back(cmp);
+            if (s.split_depth > 0.0) {
+                above[k].push_back(l.above[k]);
+                below[k].push_back(l.below[k]);
+            }
         }
         if (!cal) band.push_back(l.in_band);
         io::write_csv(staged.path() / "locations" / (rec.location + ".csv"), location_table(c, l));
@@ -201,21 +214,46 @@ int run_drivability_study_case(const std::string& file, const fs::path& out_dir,
     io::write_csv(staged.path() / "study.csv", study, {"location", "soil_case", "srd_method"}, text);
 
     Table stats("statistics", {"locations", "median_abs_ln_ratio", "share_within_factor_1_5",
-                               "median_profile_correlation", "median_share_inside_band"});
+                               "median_profile_correlation", "median_share_inside_band",
+                               "median_abs_ln_ratio_above_split", "median_abs_ln_ratio_below_split",
+                               "median_profile_correlation_below_split"});
     std::vector<std::vector<std::string>> stat_text(2);
     std::vector<io::JsonObject> stat_json;
     for (std::size_t k = 0; k < c.cases.size(); ++k) {
         const auto st = coupling::study_statistics(per_case[k]);
+        const auto up = coupling::study_statistics(above[k]), down = coupling::study_statistics(below[k]);
         stats.add_row({static_cast<double>(st.locations), st.median_abs_log_ratio, st.share_within_factor_1_5,
-                       st.median_profile_correlation, coupling::median(band)});
+                       st.median_profile_correlation, coupling::median(band), up.median_abs_log_ratio,
+                       down.median_abs_log_ratio, down.median_profile_correlation});
         stat_text[0].push_back(c.cases[k].name);
         stat_text[1].push_back(coupling::srd_method_name(c.cases[k].method));
         io::JsonObject j = statistics_json(st);
+        if (s.split_depth > 0.0)
+            j.add("split_depth_m", s.split_depth).add("above_split", std::make_shared<io::JsonObject>(statistics_json(up)))
+                .add("below_split", std::make_shared<io::JsonObject>(statistics_json(down)));
         j.add("soil_case", c.cases[k].name).add("srd_method", std::string(coupling::srd_method_name(c.cases[k].method)))
             .add("srd_factor", c.cases[k].factor);
         stat_json.push_back(std::move(j));
     }
     io::write_csv(staged.path() / "statistics.csv", stats, {"soil_case", "srd_method"}, stat_text);
+    std::vector<VerificationCheck> checks;
+    for (std::size_t k = 0; k < c.cases.size(); ++k) {
+        if (c.cases[k].name != s.verified_case) continue;
+        const auto st = coupling::study_statistics(per_case[k]);
+        const std::string who = " of " + s.verified_case + " over " + std::to_string(st.locations) + " locations";
+        if (s.max_median_abs_ln_ratio > 0.0)
+            checks.push_back(make_check("median_abs_ln_ratio", st.median_abs_log_ratio, 0.0, s.max_median_abs_ln_ratio,
+                                        false, "median |ln(predicted / measured total blows)|" + who + ", at most"));
+        if (s.min_median_profile_correlation > -1.0) {
+            auto r = make_check("median_profile_correlation", st.median_profile_correlation,
+                                s.min_median_profile_correlation, 0.0, false,
+                                "median Pearson r of blows per metre" + who + ", at least");
+            r.at_least = true;
+            r.passed = st.median_profile_correlation >= s.min_median_profile_correlation;
+            checks.push_back(r);
+        }
+    }
+    if (!checks.empty()) io::write_json(staged.path() / "verification.json", verification_json(c, checks, {}));
 
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     io::JsonObject o;
@@ -252,12 +290,18 @@ int run_drivability_study_case(const std::string& file, const fs::path& out_dir,
                     c.title.c_str(), reference * 1e-3,
                     s.calibration_location.empty() ? "" : (" (fitted on " + s.calibration_location + ")").c_str(),
                     results.size(), depth_points, wall);
-        std::printf("  %-16s %-20s %10s %12s %12s\n", "soil case", "method", "median|ln|", "within x1.5", "median r");
+        std::printf("  %-16s %-20s %10s %12s %9s", "soil case", "method", "median|ln|", "within x1.5", "median r");
+        if (s.split_depth > 0.0) std::printf("   median|ln| above / below %.1f m", s.split_depth);
+        std::printf("\n");
         for (std::size_t k = 0; k < c.cases.size(); ++k) {
             const auto st = coupling::study_statistics(per_case[k]);
-            std::printf("  %-16s %-20s %10.3f %11.0f%% %12.2f\n", c.cases[k].name.c_str(),
+            std::printf("  %-16s %-20s %10.3f %11.0f%% %9.2f", c.cases[k].name.c_str(),
                         coupling::srd_method_name(c.cases[k].method), st.median_abs_log_ratio,
                         100 * st.share_within_factor_1_5, st.median_profile_correlation);
+            if (s.split_depth > 0.0)
+                std::printf("   %10.3f / %.3f", coupling::study_statistics(above[k]).median_abs_log_ratio,
+                            coupling::study_statistics(below[k]).median_abs_log_ratio);
+            std::printf("\n");
         }
         std::printf("  median share of depths inside %s .. %s: %.0f%%\n  results in %s\n", s.lower_case.c_str(),
                     s.upper_case.c_str(), 100 * coupling::median(band), out_dir.c_str());

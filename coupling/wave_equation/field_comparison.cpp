@@ -34,6 +34,17 @@ double MeasuredDriving::total_blows() const {
     return cumulative_blows.back() - cumulative_blows.front();
 }
 
+MeasuredDriving MeasuredDriving::between(double top, double bottom) const {
+    MeasuredDriving m;
+    for (std::size_t i = 0; i < depth.size(); ++i)
+        if (depth[i] >= top - 1e-9 && depth[i] <= bottom + 1e-9) {
+            m.depth.push_back(depth[i]);
+            m.blows_per_m.push_back(blows_per_m[i]);
+            m.cumulative_blows.push_back(cumulative_blows[i]);
+        }
+    return m;
+}
+
 PredictedDriving predicted_from_table(const Table& t) {
     const auto& z = t.data[static_cast<std::size_t>(column_of(t, "depth_m"))];
     const auto& b = t.data[static_cast<std::size_t>(column_of(t, "blows_per_0.25m"))];

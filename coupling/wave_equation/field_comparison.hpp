@@ -15,6 +15,8 @@ namespace pilempm::coupling {
 struct MeasuredDriving {
     std::vector<double> depth, blows_per_m, cumulative_blows;
     double total_blows() const;  // cumulative between the first and last driven depth
+    // The record between two depths (both included).
+    MeasuredDriving between(double top, double bottom) const;
 };
 
 // A predicted blows-per-metre profile at the measured depths (from a drivability table).

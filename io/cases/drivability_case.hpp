@@ -20,6 +20,10 @@ struct DrivabilityStudy {
     std::string calibration_soil_case = "best_estimate";
     double calibration_low = 0.0, calibration_high = 0.0;  // J, bracket of reference_energy
     std::string lower_case = "lower_bound", upper_case = "upper_bound";  // the band
+    double split_depth = 0.0;               // m: statistics also above and below it (0: none)
+    // verification: the statistics of one soil case against stated aims (negative: none).
+    std::string verified_case;
+    double max_median_abs_ln_ratio = -1.0, min_median_profile_correlation = -2.0;
 };
 
 struct DrivabilityCase : CaseFile, PileInput, HammerInput {

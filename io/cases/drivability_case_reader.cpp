@@ -267,6 +267,7 @@ void read_study(MapReader m, DrivabilityCase& c) {
         m.fail("records", "a field records file holding the locations", e.what());
     }
     s.stick_up = m.number_or("stick_up", 10.0, non_negative("length in m"));
+    s.split_depth = m.number_or("split_depth", 0.0, non_negative("depth in m"));
     s.reference_energy = m.number("reference_energy", positive("energy in J"));
     if (!(c.rated_energy > 0.0)) m.fail("reference_energy", "a hammer with a rated energy (a ram and a drop height)");
     if (auto cal = m.optional_map("calibration")) {
@@ -338,7 +339,17 @@ DrivabilityCase read_drivability_case(const std::string& file) {
         c.plots = out->boolean_or("plots", true);
         out->finish();
     }
-    if (auto v = root.optional_map("verification")) {
+    if (auto v = c.study_mode ? root.optional_map("verification") : std::nullopt) {
+        // A study is verified on its statistics against the records.
+        auto& s = c.study;
+        s.verified_case = v->text_or("soil_case", "best_estimate");
+        if (std::none_of(c.cases.begin(), c.cases.end(), [&s](const auto& k) { return k.name == s.verified_case; }))
+            v->fail("soil_case", "one of the study's soil cases", "'" + s.verified_case + "'");
+        s.max_median_abs_ln_ratio = v->number_or("median_abs_ln_ratio", -1.0, positive("an upper bound of median |ln(predicted/measured)|"));
+        s.min_median_profile_correlation =
+            v->number_or("median_profile_correlation", -2.0, in_open_range(-1.0, 1.0, "a lower bound of the median r"));
+        v->finish();
+    } else if (auto v = root.optional_map("verification")) {
         c.verification_checks = v->words("checks", kChecks);
         c.verification_depth = v->number_or("depth", 0.0, non_negative("depth in m"));
         c.observed_self_weight_penetration =

@@ -44,3 +44,7 @@ pilempm_case_test(long_collapse_plane_strain_a2 cases/examples/column-collapse-p
 pilempm_case_test(long_collapse_axisymmetric_a2 cases/examples/column-collapse-axisymmetric-a2.yaml long)
 # The energy-levels drivability study with its bearing graph.
 pilempm_case_test(long_drivability_energy_levels cases/drivability/north-sea-monopile-energy-levels.yaml long)
+# Fast path against field records (issue 15): the full ISFOG 2020 study (38 locations,
+# against the issue's aims) and a three-location version in CI.
+pilempm_case_test(long_isfog2020_study cases/drivability/isfog2020-study.yaml long)
+pilempm_case_test(validate_isfog2020_three_locations cases/drivability/isfog2020-study-three-locations.yaml validation)
