@@ -7,6 +7,9 @@ drivability.png   the drivability sheet: four panels sharing a depth axis pointi
                   blows with any observed points, (d) max compression (solid) and tension
                   (dashed) stress in MPa. One colour per run (soil case x energy level); a
                   triangle on the left axis and a thin line mark each run's refusal depth.
+                  With soil from a CPT (summary cpt_profile_file) a first panel shows q_t
+                  with the clay-like stretches shaded; with a driving plan (energy_level
+                  varying with depth) a last panel shows the hammer energy used.
 bearing_graph.png when the bearing graph CSV exists: ultimate resistance against blows per
                   0.25 m, one line per energy level, and the stresses against resistance.
 
@@ -97,6 +100,7 @@ def read_summary(out_dir):
         "hard": number(summary, "hard_driving_blow_count", path, default=75.0),
         "observed": read_observed(summary.get("observed"), path),
         "bearing_file": summary.get("bearing_graph_file"),
+        "cpt_profile_file": summary.get("cpt_profile_file") if isinstance(summary.get("cpt_profile_file"), str) else None,
         "rated_energy_J": summary.get("rated_energy_J") if isinstance(summary.get("rated_energy_J"), (int, float)) else None,
         "runs": [],
     }
@@ -288,8 +292,26 @@ def plot_drivability(out_dir, summary):
         e = plot_common.read_columns(run["file"], ["energy_level"]) if has_column(run["file"], "energy_level") else None
         energies.append(np.asarray(e["energy_level"], dtype=float) if e else None)
     planned = any(e is not None and np.nanmax(e) - np.nanmin(e) > 1e-12 for e in energies)
-    fig, axes = plt.subplots(1, 5 if planned else 4, figsize=(19 if planned else 16, 9), sharey=True)
+    # Soil from a CPT gets a first panel: q_t with the clay-like stretches, beside the SRD.
+    cpt = None
+    if summary.get("cpt_profile_file"):
+        cpt = read_columns(os.path.join(out_dir, os.path.basename(summary["cpt_profile_file"])),
+                           ["depth_m", "qt_Pa", "soil_type_clay"])
+    n = 4 + int(planned) + int(cpt is not None)
+    fig, all_axes = plt.subplots(1, n, figsize=(3.8 * n + 0.8, 9), sharey=True)
+    axes = list(all_axes[1:] if cpt is not None else all_axes)
     ax_srd, ax_blows, ax_cum, ax_stress = axes[:4]
+    if cpt is not None:
+        ax_q = all_axes[0]
+        ax_q.plot(cpt["qt_Pa"] * 1e-6, cpt["depth_m"], color="0.2", lw=1.3)
+        z, clay = cpt["depth_m"], cpt["soil_type_clay"] > 0.5
+        for i in np.nonzero(clay)[0]:
+            lo = 0.5 * (z[i - 1] + z[i]) if i > 0 else 0.0
+            hi = 0.5 * (z[i] + z[i + 1]) if i + 1 < len(z) else z[i]
+            ax_q.axhspan(lo, hi, color="tab:brown", alpha=0.25, lw=0)
+        ax_q.set_xlim(left=0)
+        ax_q.set_xlabel("q_t (MPa); clay-like shaded")
+        ax_q.set_title("CPT", fontsize=11)
 
     # Depth range shared by all panels, 0 (seabed) at the top.
     max_depth = finite_max(*[r["data"]["depth_m"] for r in runs],
@@ -384,6 +406,8 @@ def plot_drivability(out_dir, summary):
         ax_e.set_xlabel("Hammer energy (kJ)" if rated else "Hammer energy (% of rated)")
         ax_e.set_title("(e) Energy used", fontsize=11)
 
+    if cpt is not None:
+        axes = [all_axes[0]] + axes
     for ax in axes:
         ax.set_ylim(depth_bottom, 0.0)  # depth axis points down
         ax.grid(True, alpha=0.35)
@@ -393,7 +417,7 @@ def plot_drivability(out_dir, summary):
         if run["refusal_depth"] is not None:
             for ax in axes:
                 mark_refusal(ax, run["refusal_depth"], colors[i])
-    ax_srd.set_ylabel("Depth below seabed (m)")
+    axes[0].set_ylabel("Depth below seabed (m)")
 
     fig.suptitle(summary["title"], fontsize=14, fontweight="bold")
     handles, labels, ncol = legend_layout(runs, handles, levels, several_levels)
