@@ -69,6 +69,7 @@ private:
     std::vector<double> damping_;       // N s/m per DOF (toe dashpot)
     std::vector<char> fixed_;           // per DOF
     std::vector<int> head_dofs_;
+    bool rod_chain_ = false;            // one rod block, element e on nodes e, e + 1
     double head_mass_ = 0.0;
     double toe_reaction_ = 0.0;
 };
