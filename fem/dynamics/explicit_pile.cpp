@@ -106,23 +106,64 @@ void ExplicitPile::add_head_force(double force_up) {
     for (int d : head_dofs_) f_ext_[d] += force_up * ops_.lumped_mass[d] / head_mass_;
 }
 
+// m / dt costs a division per DOF: computed once per time step, not every step. A blow
+// alternates full steps and the half steps of kinetic-damping restarts: keep both.
+const ExplicitPile::VelocityUpdate& ExplicitPile::velocity_update(double dt) {
+    for (auto& c : update_cache_)
+        if (c.dt == dt) return c;
+    VelocityUpdate& c = update_cache_[next_slot_];
+    next_slot_ = 1 - next_slot_;
+    const auto& m = ops_.lumped_mass;
+    c.dt = dt;
+    c.keep.resize(v_.size());
+    c.scale.resize(v_.size());
+    for (std::size_t i = 0; i < v_.size(); ++i) {
+        c.keep[i] = m[i] / dt - 0.5 * damping_[i];
+        c.scale[i] = m[i] / dt + 0.5 * damping_[i];
+    }
+    return c;
+}
+
+void ExplicitPile::add_nodal_damping(int dof, double c) {
+    damping_[dof] += c;
+    update_cache_[0].dt = update_cache_[1].dt = 0.0;  // their coefficients hold the damping
+    reaction_dofs_listed_ = false;
+}
+
+void ExplicitPile::list_reaction_dofs() {
+    reaction_dofs_.clear();
+    for (int i = 0; i < mesh_.num_dofs(); ++i)
+        if (fixed_[i] || damping_[i] > 0.0) reaction_dofs_.push_back(i);
+    reaction_dofs_listed_ = true;
+}
+
+// What the supports and dashpots take over the step, from v_{n-1/2} (DOF order, as summed
+// before the velocities had a loop of their own).
+double ExplicitPile::support_reaction(const VelocityUpdate& c) const {
+    double r = 0.0;
+    for (int i : reaction_dofs_) {
+        const double f = f_ext_[i] - f_int_[i];
+        if (fixed_[i]) {
+            r -= f;  // the support holds the node still: reaction balances f
+            continue;
+        }
+        const double v_new = (c.keep[i] * v_[i] + f) / c.scale[i];
+        r -= 0.5 * damping_[i] * (v_[i] + v_new);
+    }
+    return r;
+}
+
 void ExplicitPile::advance_velocity(double dt) {
     const int n = mesh_.num_dofs();
     const auto& m = ops_.lumped_mass;
-    toe_reaction_ = 0.0;
-    for (int i = 0; i < n; ++i) {
-        const double f = f_ext_[i] - f_int_[i];
-        if (fixed_[i]) {
-            toe_reaction_ -= f;  // the support holds the node still: reaction balances f
-            v_[i] = 0.0;
-            continue;
-        }
-        // Dashpot taken at mid-step: unconditionally stable for any impedance.
-        const double c = damping_[i];
-        const double v_old = v_[i];
-        v_[i] = ((m[i] / dt - 0.5 * c) * v_old + f) / (m[i] / dt + 0.5 * c);
-        if (c > 0.0) toe_reaction_ -= 0.5 * c * (v_old + v_[i]);
-    }
+    if (!reaction_dofs_listed_) list_reaction_dofs();
+    const VelocityUpdate& c = velocity_update(dt);
+    toe_reaction_ = support_reaction(c);
+    // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
+    // loop over all DOFs; the fixed ones are put back to rest after it.
+    for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    for (int i : reaction_dofs_)
+        if (fixed_[i]) v_[i] = 0.0;
     // Rigid head plate: the head DOFs share the momentum of the plate.
     double p = 0.0;
     for (int d : head_dofs_) p += m[d] * v_[d];

@@ -59,3 +59,20 @@ TEST(ExplicitPileFastPaths, RodChainGivesTheGenericForcesExactly) {
     generic.axial_stress(b);
     EXPECT_EQ(a, b);
 }
+
+TEST(ExplicitPileFastPaths, DampingAddedAfterAStepActs) {
+    // The velocity update keeps its coefficients between steps; a dashpot added after
+    // a step (at rest, so the state stays zero) must still count.
+    ExplicitPile late(tapered_rod(), kSteel, {ToeCondition::Free, 0.0});
+    late.compute_internal_force();
+    late.clear_external_force();
+    late.advance_velocity(0.9 * late.stable_time_step());
+    ExplicitPile early(tapered_rod(), kSteel, {ToeCondition::Free, 0.0});
+    early.add_nodal_damping(early.mesh().axial_dof(3), 5e6);
+    late.add_nodal_damping(late.mesh().axial_dof(3), 5e6);
+    strike(early, 200);
+    strike(late, 200);
+    EXPECT_EQ(early.velocity(), late.velocity());
+    EXPECT_EQ(early.toe_reaction(), late.toe_reaction());
+    EXPECT_NE(early.toe_reaction(), 0.0);
+}
