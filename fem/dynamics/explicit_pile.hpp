@@ -41,7 +41,7 @@ public:
     void add_head_velocity(double dv_up);
     // Generic nodal loads and dashpots for whatever acts on the pile (soil springs).
     void add_nodal_force(int dof, double force) { f_ext_[dof] += force; }
-    void add_nodal_damping(int dof, double c) { damping_[dof] += c; }
+    void add_nodal_damping(int dof, double c);
 
     // Toe reaction (force of the support on the pile, up positive) of the last step.
     double toe_reaction() const { return toe_reaction_; }
@@ -61,6 +61,15 @@ public:
     void stop() { std::fill(v_.begin(), v_.end(), 0.0); }
 
 private:
+    // v_{n+1/2} = (keep v_{n-1/2} + f) / scale, with keep and scale = m / dt -+ c / 2.
+    struct VelocityUpdate {
+        double dt = 0.0;  // 0: not computed
+        std::vector<double> keep, scale;
+    };
+    const VelocityUpdate& velocity_update(double dt);
+    void list_reaction_dofs();
+    double support_reaction(const VelocityUpdate& c) const;
+
     PileMesh mesh_;
     LinearElasticSteel steel_;
     PileOperators ops_;
@@ -68,7 +77,12 @@ private:
     std::vector<double> u_, v_, f_int_, f_ext_;
     std::vector<double> damping_;       // N s/m per DOF (toe dashpot)
     std::vector<char> fixed_;           // per DOF
+    std::vector<int> reaction_dofs_;    // fixed or damped DOFs, ascending
+    bool reaction_dofs_listed_ = false;
+    VelocityUpdate update_cache_[2];
+    int next_slot_ = 0;
     std::vector<int> head_dofs_;
+    bool rod_chain_ = false;            // one rod block, element e on nodes e, e + 1
     double head_mass_ = 0.0;
     double toe_reaction_ = 0.0;
 };
