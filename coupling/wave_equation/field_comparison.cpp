@@ -127,10 +127,24 @@ double fit_reference_energy(const std::function<double(double)>& total_blows, do
     // More energy, fewer blows: the match is bracketed when blows(low) >= measured >= blows(high).
     if (total_blows(high) >= measured) return high;
     if (total_blows(low) <= measured) return low;
+    // Illinois (modified regula falsi) on ln blows against ln E, which is close to a line:
+    // a few runs of the location instead of the dozen bisection needs.
     double a = std::log(low), b = std::log(high);
-    while (b - a > 1e-3) {
-        const double mid = 0.5 * (a + b);
-        (total_blows(std::exp(mid)) > measured ? a : b) = mid;
+    double fa = std::log(total_blows(low) / measured), fb = std::log(total_blows(high) / measured);
+    int side = 0;
+    for (int it = 0; it < 60 && b - a > 1e-3; ++it) {
+        const double x = (a * fb - b * fa) / (fb - fa);
+        const double fx = std::log(total_blows(std::exp(x)) / measured);
+        if (std::abs(fx) < 1e-4) return std::exp(x);
+        if (fx > 0.0) {  // too many blows: the energy is higher
+            a = x, fa = fx;
+            if (side == 1) fb *= 0.5;
+            side = 1;
+        } else {
+            b = x, fb = fx;
+            if (side == -1) fa *= 0.5;
+            side = -1;
+        }
     }
     return std::exp(0.5 * (a + b));
 }

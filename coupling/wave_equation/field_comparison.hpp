@@ -51,7 +51,8 @@ struct StudyStatistics {
 StudyStatistics study_statistics(const std::vector<Comparison>& c);
 
 // The reference energy in [low, high] at which `total_blows(E)` (decreasing in E) equals
-// `measured`, by bisection in log E to 0.1 %; a bracket end when the match lies outside.
+// `measured` (ln blows matched to 1e-4, or E to 0.1 %); a bracket end when the match lies
+// outside the bracket.
 double fit_reference_energy(const std::function<double(double)>& total_blows, double measured, double low,
                             double high);
 

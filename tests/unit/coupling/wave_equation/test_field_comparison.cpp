@@ -53,10 +53,18 @@ TEST(FieldComparison, StatisticsMedianAndFactor) {
 }
 
 TEST(FieldComparison, ReferenceEnergyFitInvertsADecreasingLaw) {
-    // blows = k / E: the fit must give E = k / measured to the bisection's 0.1 %.
+    // blows = k / E: the fit must give E = k / measured to 0.1 %.
     const double k = 3.0e9;
     auto blows = [k](double e) { return k / e; };
     EXPECT_NEAR(fit_reference_energy(blows, 2500.0, 0.3e6, 4.0e6), k / 2500.0, 1e-3 * k / 2500.0);
+    // A curved law, blows = 800 + (1 MJ / E)^2 x 1000: 1800 blows at E = 1 MJ.
+    int calls = 0;
+    auto curved = [&calls](double e) {
+        ++calls;
+        return 800.0 + 1000.0 * (1e6 / e) * (1e6 / e);
+    };
+    EXPECT_NEAR(fit_reference_energy(curved, 1800.0, 0.3e6, 4.0e6), 1e6, 1e-3 * 1e6);
+    EXPECT_LT(calls, 20);
     // Outside the bracket: its end.
     EXPECT_DOUBLE_EQ(fit_reference_energy(blows, 1.0, 0.3e6, 4.0e6), 4.0e6);
     EXPECT_DOUBLE_EQ(fit_reference_energy(blows, 1e6, 0.3e6, 4.0e6), 0.3e6);
