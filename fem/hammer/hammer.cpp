@@ -137,7 +137,8 @@ void HammerChain::advance_velocity(double dt) {
 void HammerChain::resolve_contacts(double dt, fem::ExplicitPile& pile) {
     auto lower_mass = [&](const Link& l) { return l.lower < 0 ? pile.head_mass() : m_[l.lower]; };
     auto lower_velocity = [&](const Link& l) { return l.lower < 0 ? pile.head_velocity() : v_[l.lower]; };
-    std::vector<char> struck(links_.size(), 0);
+    std::vector<char>& struck = struck_;  // a member: no allocation per step
+    struck.assign(links_.size(), 0);
     // Gauss-Seidel over the contact pairs: few pairs, converges in a few sweeps.
     for (int sweep = 0; sweep < 50; ++sweep) {
         bool changed = false;

@@ -109,6 +109,7 @@ private:
     std::vector<double> m_, u_, v_, f_;
     std::vector<double> v_previous_;  // v at t_{n-1/2}
     std::vector<Link> links_;
+    std::vector<char> struck_;        // resolve_contacts: the contacts that took an impulse
     int ram_nodes_ = 1;
     double gravity_ = 9.81;
     double head_force_ = 0.0;
