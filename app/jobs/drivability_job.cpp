@@ -70,13 +70,8 @@ io::JsonObject summary_json(const io::DrivabilityCase& c, const coupling::Drivab
         .add("qc_correlation", std::string(c.soil.cpt.depth.empty() ? "Baldi et al. (1986), normally consolidated sand: q_c = 157 sigma'_v0^0.55 exp(2.41 D_R) (kPa)"
                                                                     : "CPT record " + c.cpt_file));
     if (c.cpt_soil) {
-        std::vector<io::JsonObject> corr;
-        for (const auto& line : coupling::cpt_correlations(c.cpt_options)) {
-            io::JsonObject j;
-            j.add("correlation", line);
-            corr.push_back(j);
-        }
-        o.add("cpt_profile_file", std::string("cpt_profile.csv")).add("cpt_correlations", corr)
+        o.add("cpt_profile_file", std::string("cpt_profile.csv"))
+            .add("cpt_correlations", io::json_lines("correlation", coupling::cpt_correlations(c.cpt_options)))
             .add("cpt_points_smoothed", static_cast<double>(c.cpt_interpretation.smoothed_points));
     }
     if (!s.energy_plan_depth.empty())

@@ -107,7 +107,8 @@ Table location_table(const io::DrivabilityCase& c, const LocationResult& l) {
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const Table& run = run_of(l.result, cases[k].name).table;
         const auto p = coupling::predicted_from_table(run);
-        const auto& srd = run.data[3];
+        const auto srd_col = std::find(run.columns.begin(), run.columns.end(), "srd_total_N") - run.columns.begin();
+        const auto& srd = run.data[static_cast<std::size_t>(srd_col)];
         double cumulative = 0.0;
         for (std::size_t i = 0; i < m.depth.size() && i < p.depth.size(); ++i) {
             if (i > 0) cumulative += 0.5 * (p.blows_per_m[i] + p.blows_per_m[i - 1]) * (p.depth[i] - p.depth[i - 1]);
@@ -268,13 +269,7 @@ int run_drivability_study_case(const std::string& file, const fs::path& out_dir,
             .add("bracket_J", std::vector<double>{s.calibration_low, s.calibration_high});
         o.add("calibration", std::make_shared<io::JsonObject>(cal));
     }
-    std::vector<io::JsonObject> corr;
-    for (const auto& line : coupling::cpt_correlations(c.cpt_options)) {
-        io::JsonObject j;
-        j.add("correlation", line);
-        corr.push_back(j);
-    }
-    o.add("cpt_correlations", corr).add("band", s.lower_case + " .. " + s.upper_case)
+    o.add("cpt_correlations", io::json_lines("correlation", coupling::cpt_correlations(c.cpt_options))).add("band", s.lower_case + " .. " + s.upper_case)
         .add("median_share_inside_band", coupling::median(band)).add("statistics", stat_json)
         .add("locations", static_cast<double>(results.size())).add("depth_points", static_cast<double>(depth_points))
         .add("wall_time_s", wall);

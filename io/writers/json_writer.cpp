@@ -71,4 +71,14 @@ void write_json(const std::filesystem::path& file, const JsonObject& o) {
     if (!out) throw std::runtime_error("error writing " + file.string());
 }
 
+std::vector<JsonObject> json_lines(const std::string& key, const std::vector<std::string>& lines) {
+    std::vector<JsonObject> out;
+    for (const auto& line : lines) {
+        JsonObject j;
+        j.add(key, line);
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
 }  // namespace pilempm::io

@@ -23,6 +23,8 @@ struct JsonObject {
 };
 
 std::string to_json(const JsonObject& o, int indent = 0);
+// A list of one-member objects {key: line}, e.g. the correlations a model used.
+std::vector<JsonObject> json_lines(const std::string& key, const std::vector<std::string>& lines);
 void write_json(const std::filesystem::path& file, const JsonObject& o);
 
 }  // namespace pilempm::io
