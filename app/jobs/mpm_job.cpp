@@ -40,7 +40,7 @@ std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::M
     coupling::StageDriver<D> driver(run.model, run.stages, run.loads, run.settings);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
-    driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points));
+    driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
     driver.run();
     auto checks = mpm::run_mpm_verification<D>(context, run.model, run.x0, driver.history());
     for (auto& k : checks) k.name += "_grid_" + grid;
@@ -121,10 +121,15 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                          restored.solver.time, restored.solver.steps);
     }
     io::MpmRunOutput<D> output(staged, io::state_names(m), fingerprint(c), quiet);
+    if (m.saturated()) {
+        std::vector<double> friction;
+        for (const auto& mat : c.materials) friction.push_back(mat.friction_angle);
+        output.set_pore_water(m.water, friction);
+    }
     coupling::StageDriver<D> driver(m, run.stages, run.loads, run.settings, &output);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
-    driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points));
+    driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
     if (resume) {
         output.adopt_snapshots(restored.snapshot_times);
         driver.resume(restored.driver, restored.solver, restored.history);
@@ -184,7 +189,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     if (!c.verification_checks.empty()) {
         const auto& first = c.materials.front();
         const mpm::MpmCheckContext context{c.verification_checks, c.verification, c.gravity, first.density,
-                                           first.model, first.poisson_ratio};
+                                           first.model, first.poisson_ratio, c.probes};
         auto checks = mpm::run_mpm_verification<D>(context, m, run.x0, history);
         if (!c.grid_sequence.empty()) {
             // The case's own grid (factor 1) and the others, coarsest to finest in the file.
@@ -220,9 +225,26 @@ void describe_run(const io::MpmCase& c) {
     mpm::MpmSolver<D> solver(run.model);
     solver.activate_grid();
     const auto mem = solver.memory();
+    const mpm::TimeStepLimit limit = solver.time_step_limit();
     std::printf("  MPM            %s, %zu material points, dt %.3g s\n",
-                D == 3 ? "3D" : c.axisymmetric ? "2D axisymmetric" : "2D plane strain", mem.points,
-                solver.stable_time_step());
+                D == 3 ? "3D" : c.axisymmetric ? "2D axisymmetric" : "2D plane strain", mem.points, limit.dt);
+    std::printf("  time step      set by the %s, %.4g m/s\n", limit.limited_by.c_str(), limit.wave_speed);
+    if (limit.explicit_drag_limit > 0.0)
+        std::printf("  Darcy drag     semi-implicit: no limit (explicit drag would need dt < %.3g s)\n",
+                    limit.explicit_drag_limit);
+    if (run.model.saturated()) {
+        for (std::size_t k = 0; k < c.materials.size(); ++k) {
+            const auto& dr = run.model.drainage[k];
+            if (!dr.saturated()) continue;
+            std::printf("  pore water     %s: %s, n = %.3f", c.materials[k].name.c_str(), mpm::drainage_name(dr.drainage),
+                        dr.porosity);
+            if (dr.darcy_resistance > 0.0)
+                std::printf(", k = %.3g m/s", run.model.water.density * 9.80665 / dr.darcy_resistance);
+            std::printf("\n");
+        }
+        if (run.model.water.free_surface)
+            std::printf("  water surface  at %.3f m (hydrostatic pore pressure below it)\n", run.model.water.level);
+    }
     std::printf("  grid           %zu nodes; stored where the points are: %d blocks of %d nodes\n", mem.grid_nodes,
                 run.model.grid.active_blocks(), mpm::Grid<D>::kBlockNodes);
     std::printf("  memory         %.1f MB (%zu B per point, %zu B per stored node)\n", 1e-6 * mem.total_bytes(),

@@ -21,7 +21,7 @@ template <int D>
 void EnergyRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver,
                                std::vector<double>& row) const {
     row.push_back(solver.kinetic_energy());
-    row.push_back(elastic_energy(m.particles));
+    row.push_back(elastic_energy(m.particles) + pore_water_energy(m));
     row.push_back(solver.absorbed_energy());
     row.push_back(solver.unbalanced_force_ratio());
     row.push_back(solver.external_work());
@@ -49,6 +49,9 @@ void ProbeRecorder<D>::add_columns(std::vector<std::string>& columns) const {
         columns.push_back("probe" + std::to_string(k) + "_velocity_vertical_m_s");
         columns.push_back("probe" + std::to_string(k) + "_stress_vertical_Pa");
         columns.push_back("probe" + std::to_string(k) + "_velocity_x_m_s");
+        if (!pore_water_) continue;
+        columns.push_back("probe" + std::to_string(k) + "_excess_pore_pressure_Pa");
+        columns.push_back("probe" + std::to_string(k) + "_water_velocity_vertical_m_s");
     }
 }
 
@@ -58,9 +61,25 @@ void ProbeRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>
         row.push_back(m.particles.v[D * p + D - 1]);
         row.push_back(m.particles.stress[6 * p + (D == 2 ? 1 : 2)]);
         row.push_back(m.particles.v[D * p]);
+        if (!pore_water_) continue;
+        row.push_back(m.particles.pore_pressure[p]);
+        row.push_back(m.particles.w[D * p + D - 1]);
     }
 }
 
+template <int D>
+double pore_water_energy(const mpm::MpmModel<D>& m) {
+    if (!m.saturated()) return 0.0;
+    const auto& p = m.particles;
+    double e = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.porosity[i] > 0.0)
+            e += 0.5 * p.pore_pressure[i] * p.pore_pressure[i] * p.porosity[i] / m.water.bulk_modulus * p.volume[i];
+    return e;
+}
+
+template double pore_water_energy<2>(const mpm::MpmModel<2>&);
+template double pore_water_energy<3>(const mpm::MpmModel<3>&);
 template double elastic_energy<2>(const mpm::Particles<2>&);
 template double elastic_energy<3>(const mpm::Particles<3>&);
 template class EnergyRecorder<2>;

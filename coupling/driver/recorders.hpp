@@ -39,20 +39,26 @@ private:
     std::vector<int> nodes_;
 };
 
-// Vertical velocity, vertical stress and horizontal (x) velocity of given material points.
+// Vertical velocity, vertical stress and horizontal (x) velocity of given material points;
+// with pore water also their excess pore pressure and vertical water velocity.
 template <int D>
 class ProbeRecorder final : public Recorder<D> {
 public:
-    explicit ProbeRecorder(std::vector<int> points) : points_(std::move(points)) {}
+    explicit ProbeRecorder(std::vector<int> points, bool pore_water = false)
+        : points_(std::move(points)), pore_water_(pore_water) {}
     void add_columns(std::vector<std::string>& columns) const override;
     void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const override;
 
 private:
     std::vector<int> points_;
+    bool pore_water_;
 };
 
 // 0.5 sigma : eps V summed over the points (the strain energy of a linear-elastic body).
 template <int D>
 double elastic_energy(const mpm::Particles<D>& p);
+// The strain energy of the pore water's excess pressure, 0.5 p^2 n / K_w V (0 when dry).
+template <int D>
+double pore_water_energy(const mpm::MpmModel<D>& m);
 
 }  // namespace pilempm::coupling

@@ -78,6 +78,40 @@ void read_mu_i(MapReader& m, MaterialInput& mat) {
     mat.friction_angle = std::atan(r.mu_s) * 180.0 / std::numbers::pi;
 }
 
+// How a saturated material drains. Porosity has one owner: a model with a void ratio gives
+// it (n = e / (1 + e)) unless porosity is stated, and then the two must agree.
+void read_pore_water(MapReader& m, MaterialInput& mat) {
+    mat.drainage = m.choice_or("drainage", "dry", {"dry", "drained", "undrained", "coupled"});
+    if (mat.drainage == "dry") {
+        for (const char* key : {"porosity", "hydraulic_conductivity", "intrinsic_permeability"})
+            if (m.has(key)) m.fail(key, std::string("no ") + key + " for a dry material (drainage: dry)", "one");
+        return;
+    }
+    const double from_void_ratio = mat.void_ratio > 0.0 ? mat.void_ratio / (1.0 + mat.void_ratio) : 0.0;
+    if (m.has("porosity")) {
+        mat.porosity = m.number("porosity", in_open_range(0.0, 1.0, "a porosity n between 0 and 1"));
+        if (from_void_ratio > 0.0 && std::abs(mat.porosity - from_void_ratio) > 1e-3)
+            m.fail("porosity", "the porosity of the void ratio, e / (1 + e) = " + std::to_string(from_void_ratio),
+                   std::to_string(mat.porosity));
+    } else if (from_void_ratio > 0.0) {
+        mat.porosity = from_void_ratio;
+    } else {
+        m.fail("porosity", "the porosity of a saturated material", "none");
+    }
+    if (mat.drainage != "coupled") {
+        for (const char* key : {"hydraulic_conductivity", "intrinsic_permeability"})
+            if (m.has(key)) m.fail(key, std::string("no ") + key + " unless drainage: coupled", "one");
+        return;
+    }
+    if (m.has("hydraulic_conductivity") == m.has("intrinsic_permeability"))
+        m.fail("hydraulic_conductivity", "one of hydraulic_conductivity (m/s) or intrinsic_permeability (m^2)",
+               "both or neither");
+    if (m.has("hydraulic_conductivity"))
+        mat.hydraulic_conductivity = m.number("hydraulic_conductivity", positive("a hydraulic conductivity k in m/s"));
+    else
+        mat.intrinsic_permeability = m.number("intrinsic_permeability", positive("an intrinsic permeability in m^2"));
+}
+
 }  // namespace
 
 MaterialInput read_material(MapReader m, bool with_density) {
@@ -149,6 +183,7 @@ MaterialInput read_material(MapReader m, bool with_density) {
     }
     if (mat.model == "mu_i_rheology") read_mu_i(m, mat);
     mat.k0 = m.number_or("k0", -1.0, positive("earth pressure coefficient at rest"));
+    if (with_density) read_pore_water(m, mat);
     m.finish();
     return mat;
 }

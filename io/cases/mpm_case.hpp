@@ -29,6 +29,16 @@ struct MpmBoundaryInput {
     int axis = 0, side = 0;
     mpm::BoundaryKind kind = mpm::BoundaryKind::Fixed;
     double friction = 0.0;  // Coulomb coefficient of a frictional wall
+    bool drained = false;   // saturated soil: water flows through it (default: impermeable)
+};
+
+// The pore water of saturated materials and the free water surface above the ground.
+struct MpmWaterInput {
+    double density = 1000.0;      // kg/m^3
+    double bulk_modulus = 2.2e9;  // Pa
+    double viscosity = 1.0e-3;    // Pa s (converts an intrinsic permeability)
+    bool free_surface = false;
+    double level = 0.0;           // elevation of the free water surface, m
 };
 
 struct MpmPressureInput {  // on the points in a box: force = -pressure n x face area
@@ -71,6 +81,7 @@ struct MpmCase : CaseFile {
     std::vector<MpmBoundaryInput> boundaries;
     std::vector<MpmPressureInput> pressures;
     std::vector<MpmVelocityInput> velocities;
+    MpmWaterInput water;
     bool k0_initial_stress = false;
     double surface = 0.0;           // elevation of the ground surface for K0, m
     std::vector<MpmStageInput> stages;

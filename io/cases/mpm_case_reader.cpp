@@ -11,7 +11,8 @@ namespace {
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
                                           "absorbed_energy", "footing_collapse", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
-                                          "shear_wave_arrival"};
+                                          "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
+                                          "hydrostatic_equilibrium", "skempton_b"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
     const auto v = m.numbers(key, {"a coordinate in m", [](double) { return true; }});
@@ -133,6 +134,16 @@ MpmCase read_mpm_case(const std::string& file) {
     c.flip = root.number_or("flip", 0.98, {"a FLIP fraction from 0 to 1", [](double x) { return x >= 0 && x <= 1; }});
     c.cfl = root.number_or("cfl", 0.5, in_half_open_range(0.0, 1.0, "a Courant number"));
     for (auto m : root.maps("materials")) c.materials.push_back(read_material(std::move(m), true));
+    if (auto w = root.optional_map("water")) {
+        c.water.density = w->number_or("density", 1000.0, positive("water density in kg/m^3"));
+        c.water.bulk_modulus = w->number_or("bulk_modulus", 2.2e9, positive("the water's bulk modulus K_w in Pa"));
+        c.water.viscosity = w->number_or("viscosity", 1.0e-3, positive("dynamic viscosity in Pa s"));
+        if (w->has("level")) {
+            c.water.free_surface = true;
+            c.water.level = w->number("level", {"the elevation of the free water surface in m", [](double) { return true; }});
+        }
+        w->finish();
+    }
     for (auto m : root.maps("regions")) c.regions.push_back(read_region(std::move(m), c));
     if (root.has("boundaries"))
         for (auto m : root.maps("boundaries")) {
@@ -145,6 +156,10 @@ MpmCase read_mpm_case(const std::string& file) {
                                          : mpm::BoundaryKind::Frictional;
             if (b.kind == mpm::BoundaryKind::Frictional)
                 b.friction = m.number("friction", non_negative("Coulomb friction coefficient"));
+            // An open (absorbing) boundary lets water through as it lets the waves; a support
+            // holds the water unless drained.
+            b.drained = m.choice_or("drainage", b.kind == mpm::BoundaryKind::Absorbing ? "drained" : "impermeable",
+                                    {"drained", "impermeable"}) == "drained";
             m.finish();
             c.boundaries.push_back(b);
         }
@@ -219,7 +234,7 @@ MpmCase read_mpm_case(const std::string& file) {
         c.verification_checks = v->words("checks", kChecks);
         for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
                                 "footing_width", "reference", "initial_width", "height", "noise_bound",
-                                "min_order", "absorbed_share"})
+                                "min_order", "absorbed_share", "load", "pore_tolerance"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));

@@ -60,6 +60,32 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         m.grid.cells[d] = c.cells[d];
         m.grid.spacing[d] = c.size[d] / c.cells[d];
     }
+    // Saturated soil: the pore water of each material, and water fields when one is coupled.
+    m.water.density = c.water.density;
+    m.water.bulk_modulus = c.water.bulk_modulus;
+    m.water.free_surface = c.water.free_surface;
+    m.water.level = c.water.level;
+    m.water.gravity = c.gravity > 0.0 ? c.gravity : 9.81;
+    bool coupled = false;
+    for (const auto& mat : c.materials) {
+        mpm::MaterialDrainage dr;
+        dr.drainage = mat.drainage == "drained"     ? mpm::Drainage::Drained
+                      : mat.drainage == "undrained" ? mpm::Drainage::Undrained
+                      : mat.drainage == "coupled"   ? mpm::Drainage::Coupled
+                                                    : mpm::Drainage::Dry;
+        dr.porosity = mat.porosity;
+        // mu / kappa: from k = kappa rho_w g / mu with standard gravity (k is measured at 1 g,
+        // whatever the model's g), or from kappa and the water's viscosity.
+        constexpr double kStandardGravity = 9.80665;
+        if (mat.hydraulic_conductivity > 0.0) dr.darcy_resistance = c.water.density * kStandardGravity / mat.hydraulic_conductivity;
+        if (mat.intrinsic_permeability > 0.0) dr.darcy_resistance = c.water.viscosity / mat.intrinsic_permeability;
+        coupled = coupled || dr.drainage == mpm::Drainage::Coupled;
+        m.drainage.push_back(dr);
+    }
+    if (coupled) {
+        m.grid.water = true;
+        m.grid.fields = 2;
+    }
     m.grid.allocate();
     m.shape = c.shape;
     m.axisymmetric = c.axisymmetric;
@@ -82,17 +108,37 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
                 if (in_region<D>(c.regions[j], x)) return false;
             return true;
         };
-        mpm::fill_region<D>(m.grid, m.particles, inside, c.per_cell, c.materials[r.material].density, r.material,
-                            c.axisymmetric);
+        // A saturated point's own mass is its grains', (rho_sat - n rho_w) V: the water's is n rho_w V.
+        const auto& dr = m.drainage[r.material];
+        const double solid_density = c.materials[r.material].density - dr.porosity * c.water.density;
+        if (!(solid_density > 0.0))
+            throw std::runtime_error("material " + c.materials[r.material].name + ": the saturated density " +
+                                     std::to_string(c.materials[r.material].density) +
+                                     " kg/m^3 is not above the water's share n rho_w");
+        const std::size_t first = m.particles.size();
+        mpm::fill_region<D>(m.grid, m.particles, inside, c.per_cell, solid_density, r.material, c.axisymmetric);
+        for (std::size_t i = first; i < m.particles.size(); ++i) m.particles.porosity[i] = dr.porosity;
     }
     if (m.particles.size() == 0) throw std::runtime_error("the regions hold no material points");
     for (const auto& b : c.boundaries) {
         // Absorbing boundaries take the first material's moduli (a pressure-dependent model
         // states them at its reference pressure).
         const auto& mat = c.materials.front();
+        const auto& dr = m.drainage.front();
         const double G = m.materials.front()->shear_modulus(), M = m.materials.front()->p_wave_modulus();
-        mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, mat.density, std::sqrt(M / mat.density),
-                               std::sqrt(G / mat.density), c.axisymmetric, b.friction);
+        const double rho = mat.density;  // the whole soil's: saturated when wet
+        double cp = std::sqrt(M / rho), water_impedance = 0.0;
+        if (dr.drainage == mpm::Drainage::Undrained || dr.drainage == mpm::Drainage::Coupled) {
+            // An undrained wave carries sigma' = M eps and p = (K_w / n) eps at c_u: the skeleton's
+            // dashpot takes M / c_u, the pore pressure's K_w / (n c_u) (on the water, coupled)
+            // or with the skeleton (undrained); together rho_sat c_u.
+            const double cu = mpm::saturated_wave_speeds(M, dr.porosity, rho - dr.porosity * c.water.density, m.water).undrained;
+            const double pore = c.water.bulk_modulus / (dr.porosity * cu);
+            cp = (M / cu + (dr.drainage == mpm::Drainage::Coupled ? 0.0 : pore)) / rho;
+            if (dr.drainage == mpm::Drainage::Coupled) water_impedance = pore;
+        }
+        mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, rho, cp, std::sqrt(G / rho), c.axisymmetric, b.friction,
+                               water_impedance, b.drained);
     }
     auto& p = m.particles;
     for (const auto& pr : c.pressures)
@@ -136,7 +182,13 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
                     return c.materials[r.material];
             return c.materials.front();
         };
-        mpm::apply_k0_stress<D>(p, c.surface, c.gravity, [&](double z) { return material_at(z).density; },
+        // Effective stress from the buoyant weight below the water surface.
+        auto effective_density = [&](double z) {
+            const auto& mat = material_at(z);
+            const bool wet = mat.drainage != "dry";
+            return mat.density - (wet && m.water.submerged(z) ? c.water.density : 0.0);
+        };
+        mpm::apply_k0_stress<D>(p, c.surface, c.gravity, effective_density,
                                 [&](double z) { return mpm::k0_of(material_at(z)); });
     }
     for (std::size_t i = 0; i < p.size(); ++i)

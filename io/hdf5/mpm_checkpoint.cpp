@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFormat = "pilempm-mpm-checkpoint";
-constexpr int kFormatVersion = 4;  // 2: the affine velocity field C; 3: arrays and tables; 4: field
+constexpr int kFormatVersion = 5;  // 2: the affine velocity field C; 3: arrays and tables; 4: field; 5: pore water
 // Datasets are chunked (Fletcher32 needs chunks; a chunk must stay below 4 GiB).
 constexpr hsize_t kChunkValues = hsize_t{1} << 20;
 
@@ -81,6 +81,9 @@ void validate(const Context& c, const mpm::Particles<D>& p) {
     need("field", p.field.size(), 1);
     need("state", p.state.size(), static_cast<std::size_t>(p.state_stride));
     need("external_force", p.external_force.size(), D);
+    need("porosity", p.porosity.size(), 1);
+    need("pore_pressure", p.pore_pressure.size(), 1);
+    need("w", p.w.size(), D);
 }
 
 void write_extras(const Context& c, hid_t root, const CheckpointExtras& extras) {
@@ -139,6 +142,9 @@ void write_file(const Context& c, const fs::path& file, const mpm::Particles<D>&
         write_attribute(c, state.get(), "state_stride", p.state_stride);
     }
     write_array(c, g, "external_force", p.external_force);
+    write_array(c, g, "porosity", p.porosity);
+    write_array(c, g, "pore_pressure", p.pore_pressure);
+    write_array(c, g, "w", p.w);
     group.reset();
 
     std::vector<std::string> names;
@@ -396,6 +402,10 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
                                  "state_stride " + std::to_string(q.state_stride) +
                                      " per point" + points);
     q.external_force = read_array<double>(c, g, gp, "external_force", D * n, vec);
+    // Before format 5 there was no pore water.
+    q.porosity = version >= 5 ? read_array<double>(c, g, gp, "porosity", n, one) : std::vector<double>(n, 0.0);
+    q.pore_pressure = version >= 5 ? read_array<double>(c, g, gp, "pore_pressure", n, one) : std::vector<double>(n, 0.0);
+    q.w = version >= 5 ? read_array<double>(c, g, gp, "w", D * n, vec) : std::vector<double>(D * n, 0.0);
     q.dstrain.assign(6 * n, 0.0);
     group.reset();
 

@@ -26,6 +26,9 @@ public:
     std::filesystem::path checkpoint_path() const { return staged_.path() / "checkpoint.h5"; }
     // Writes the .pvd.
     void finish() { vtk_.finish(); }
+    void set_pore_water(const mpm::PoreWater& water, std::vector<double> friction_angle_deg) {
+        vtk_.set_pore_water(water, std::move(friction_angle_deg));
+    }
 
     void snapshot(double time, const mpm::MpmModel<D>& model) override;
     void checkpoint(const coupling::DriverState& state, const mpm::MpmModel<D>& model,

@@ -1,5 +1,6 @@
 #include "io/writers/vtk_particle_writer.hpp"
 
+#include <Eigen/Dense>
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -87,6 +89,9 @@ struct ParticleVtkSeries<D>::Impl {
     PvdCollection pvd;
     std::vector<std::string> state_names;
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    bool pore_water = false;
+    mpm::PoreWater water;
+    std::vector<double> friction_angle_deg;
 
     std::vector<std::string> state_array_names(int stride) const;
 };
@@ -146,6 +151,27 @@ template <int D>
 ParticleVtkSeries<D>::ParticleVtkSeries(ParticleVtkSeries&&) noexcept = default;
 template <int D>
 ParticleVtkSeries<D>& ParticleVtkSeries<D>::operator=(ParticleVtkSeries&&) noexcept = default;
+
+template <int D>
+void ParticleVtkSeries<D>::set_pore_water(const mpm::PoreWater& water, std::vector<double> friction_angle_deg) {
+    impl_->pore_water = true;
+    impl_->water = water;
+    impl_->friction_angle_deg = std::move(friction_angle_deg);
+}
+
+namespace {
+
+// sin of the mobilised friction angle, (s1 - s3) / -(s1 + s3), of an effective stress
+// (tension positive); 0 when it carries no compression.
+double mobilised_sine(const double* s) {
+    Eigen::Matrix3d t;
+    t << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+    const Eigen::Vector3d e = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(t, Eigen::EigenvaluesOnly).eigenvalues();
+    const double s1 = e[2], s3 = e[0];  // least and most compressive
+    return s1 + s3 < 0.0 ? std::min(1.0, (s1 - s3) / -(s1 + s3)) : 0.0;
+}
+
+}  // namespace
 
 template <int D>
 void ParticleVtkSeries<D>::write(double time, const mpm::Particles<D>& p) {
@@ -214,6 +240,27 @@ void ParticleVtkSeries<D>::write(double time, const mpm::Particles<D>& p) {
         for (std::size_t k = 0; k < stride; ++k) state[k]->SetValue(id, p.state[stride * i + k]);
     }
     offsets->SetValue(nv, nv);
+    std::vector<vtkSmartPointer<vtkDoubleArray>> water_arrays;
+    if (m.pore_water) {
+        auto total = make_array("pore_pressure", 1, nv), excess = make_array("excess_pore_pressure", 1, nv);
+        auto w = make_array("water_velocity", 3, nv), n_arr = make_array("porosity", 1, nv);
+        auto phi = make_array("mobilised_friction_angle", 1, nv), degree = make_array("degree_of_mobilisation", 1, nv);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto id = static_cast<vtkIdType>(i);
+            const double pe = p.pore_pressure[i];
+            total->SetValue(id, pe + (p.porosity[i] > 0.0 ? m.water.hydrostatic_pressure(p.x[D * i + D - 1]) : 0.0));
+            excess->SetValue(id, pe);
+            const double* wi = &p.w[D * i];
+            w->SetTuple3(id, wi[0], wi[1], D == 3 ? wi[D - 1] : 0.0);
+            n_arr->SetValue(id, p.porosity[i]);
+            const double sine = mobilised_sine(&p.stress[6 * i]);
+            phi->SetValue(id, std::asin(sine) * 180.0 / std::numbers::pi);
+            const std::size_t mat = static_cast<std::size_t>(p.material[i]);
+            const double phi_mat = mat < m.friction_angle_deg.size() ? m.friction_angle_deg[mat] : 0.0;
+            degree->SetValue(id, phi_mat > 0.0 ? sine / std::sin(phi_mat * std::numbers::pi / 180.0) : 0.0);
+        }
+        water_arrays = {total, excess, w, n_arr, phi, degree};
+    }
 
     grid->SetPoints(points);
     vtkNew<vtkCellArray> cells;
@@ -229,6 +276,7 @@ void ParticleVtkSeries<D>::write(double time, const mpm::Particles<D>& p) {
     pd->AddArray(mass);
     pd->AddArray(material);
     for (const auto& a : state) pd->AddArray(a);
+    for (const auto& a : water_arrays) pd->AddArray(a);
     // "TimeValue" field data lets ParaView show the time of a single .vtu opened alone.
     auto time_value = make_array("TimeValue", 1, 1);
     time_value->SetValue(0, time);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/materials/pore_water.hpp"
 #include "mpm/points/particles.hpp"
 
 namespace pilempm::io {
@@ -26,6 +27,11 @@ namespace pilempm::io {
 //   volume, mass (per unit thickness / per radian in 2-D), material (int)
 //   one scalar per state variable k < p.state_stride, named state_names[k] when given and
 //   not empty, "state_<k>" otherwise (names beyond state_stride are not used)
+// With pore water (set_pore_water), besides:
+//   pore_pressure (total: hydrostatic + excess) and excess_pore_pressure, Pa, compression
+//   positive; water_velocity (3 components), m/s; porosity; mobilised_friction_angle (deg,
+//   from the principal effective stresses) and degree_of_mobilisation (its sine over the
+//   material's sin phi; 0 for materials without a friction angle)
 // plus field data "TimeValue". Appended raw binary, zlib compressed. A .vtu appears under its
 // final name only once complete (written to a temporary name and renamed).
 template <int D>
@@ -47,6 +53,8 @@ public:
     // Throws std::invalid_argument when the arrays of p disagree with p.size() or time is not
     // finite, std::runtime_error (naming the file) when the file cannot be written.
     void write(double time, const mpm::Particles<D>& p);
+    // Saturated soil: the water (for the hydrostatic part) and each material's friction angle, deg.
+    void set_pore_water(const mpm::PoreWater& water, std::vector<double> friction_angle_deg);
 
     // Writes the .pvd listing all steps with their times; idempotent. Steps written after a
     // finish() are picked up by the next finish().

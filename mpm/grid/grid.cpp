@@ -8,6 +8,7 @@ namespace pilempm::mpm {
 template <int D>
 void Grid<D>::allocate() {
     if (fields < 1) throw std::invalid_argument("a grid needs at least one velocity field");
+    if (water && fields % 2 != 0) throw std::invalid_argument("a grid with water needs solid and water fields in pairs");
     int count = 1;
     for (int d = 0; d < D; ++d) {
         blocks_[d] = (cells[d] + 1 + kBlockEdge - 1) / kBlockEdge;
@@ -24,6 +25,8 @@ void Grid<D>::allocate() {
     acceleration.clear();
     position.clear();
     condition_at.clear();
+    drag.clear();
+    water_inertia.clear();
 }
 
 template <int D>
@@ -65,6 +68,10 @@ bool Grid<D>::set_active_blocks(const std::vector<unsigned char>& marked) {
     velocity.assign(D * nf, 0.0);
     acceleration.assign(D * nf, 0.0);
     position.resize(D * nf);
+    if (water) {
+        drag.assign(nf, 0.0);
+        water_inertia.assign(nf, 0.0);
+    }
     for (std::size_t k = 0; k < n; ++k) {
         const auto c = stored_ijk(static_cast<int>(k));
         for (int f = 0; f < fields; ++f)
@@ -104,8 +111,9 @@ const NodeCondition* Grid<D>::find_condition(int node) const {
 
 template <int D>
 std::size_t Grid<D>::bytes_per_stored_node() const {
-    // mass, momentum, force, velocity, acceleration and position per field; condition_at.
-    return static_cast<std::size_t>(fields) * (1 + 5 * D) * sizeof(double) + sizeof(int);
+    // mass, momentum, force, velocity, acceleration and position per field (with water: drag
+    // and water inertia); condition_at.
+    return static_cast<std::size_t>(fields) * (1 + 5 * D + (water ? 2 : 0)) * sizeof(double) + sizeof(int);
 }
 
 template struct Grid<2>;

@@ -25,6 +25,10 @@ struct NodeCondition {
     int wall = -1;                  // rigid Coulomb wall: axis * 2 + side, -1 none
     double wall_friction = 0.0;
     double reaction[3] = {0, 0, 0};     // N: what the prescription and the wall exerted last step
+    // Pore water (grids with water fields): a fixed component holds the water too (an
+    // impermeable boundary) unless the boundary is drained; the water's own dashpots.
+    bool drained = false;
+    double water_dashpot[3] = {0, 0, 0};  // N s/m
 };
 
 template <int D>
@@ -39,6 +43,8 @@ struct Grid {
     std::array<double, D> spacing{};
     std::array<int, D> cells{};
     int fields = 1;
+    // Saturated soil: the fields come in pairs, solid 2k and its pore water 2k + 1.
+    bool water = false;
 
     // Node data of the active blocks (stored nodes), reset each step.
     std::vector<double> mass;          // `fields` per stored node, kg (per radian when axisymmetric)
@@ -48,6 +54,10 @@ struct Grid {
     std::vector<double> acceleration;  // D per field
     std::vector<double> position;      // D per field (the node's, repeated), m: hot loops need no ijk()
     std::vector<int> condition_at;     // per stored node: index into conditions, -1 none
+    // With water fields: the Darcy drag sum N n (mu/kappa) V (water entries) and the water's
+    // inertia in the mixture's momentum, sum N n rho_w V (solid entries), per field.
+    std::vector<double> drag;
+    std::vector<double> water_inertia;
 
     std::vector<NodeCondition> conditions;
     // Edge planes (axis * 2 + side) the material cannot cross: fixed, roller and frictional

@@ -7,6 +7,7 @@
 // w = r in axisymmetry (Nairn & Guilkey 2013) and w = 1 otherwise, integrated exactly.
 // The hoop weight is (1/W) int chi N_i dV, so that u_r/r at the point is sum v_ri hoop_i.
 #include "mpm/grid/grid.hpp"
+#include "mpm/points/particles.hpp"
 
 namespace pilempm::mpm {
 
@@ -37,5 +38,21 @@ struct Stencil {
 template <int D>
 void evaluate_shape(const Grid<D>& grid, ShapeKind kind, bool axisymmetric, const double* x,
                     const double* half_domain, Stencil<D>& s, int field = 0);
+
+// The D half-edge vectors of point i's domain (row k = vector k): undeformed for uGIMP (and
+// linear, which does not use them), F-deformed for CPDI.
+template <int D>
+inline void half_domain_edges(const Particles<D>& p, long i, ShapeKind kind, double* half) {
+    for (int k = 0; k < D; ++k)
+        for (int d = 0; d < D; ++d) {
+            double v = 0.0;
+            if (kind == ShapeKind::CPDI) {
+                for (int e = 0; e < D; ++e) v += p.F[D * D * i + D * d + e] * p.domain0[D * D * i + D * k + e];
+            } else {
+                v = p.domain0[D * D * i + D * k + d];
+            }
+            half[D * k + d] = 0.5 * v;
+        }
+}
 
 }  // namespace pilempm::mpm

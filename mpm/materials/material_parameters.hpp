@@ -34,6 +34,11 @@ struct MaterialParameters {
     // p_ref (Pa), failure ratio R_f, K0 of normal consolidation (<0: 1 - sin phi).
     double e50_ref = 0.0, eoed_ref = 0.0, eur_ref = 0.0, g0_ref = 0.0, gamma_07 = 0.0, stiffness_exponent = 0.5;
     double reference_pressure = 100e3, failure_ratio = 0.9, k0_nc = -1.0;
+    // Pore water (MPM materials): dry | drained | undrained | coupled; the porosity of a
+    // saturated material (density is then the saturated bulk density); a coupled one's
+    // permeability as hydraulic conductivity k (m/s) or intrinsic permeability (m^2), one of them.
+    std::string drainage = "dry";
+    double porosity = 0.0, hydraulic_conductivity = 0.0, intrinsic_permeability = 0.0;
     double k0 = -1.0;  // <0: k0_nc (HS small), 1 - sin(phi) (frictional models) or nu / (1 - nu) (elastic)
 };
 

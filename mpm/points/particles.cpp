@@ -9,7 +9,10 @@ void Particles<D>::add(const double* position, double point_mass, double point_v
         x.push_back(position[d]);
         v.push_back(0.0);
         external_force.push_back(0.0);
+        w.push_back(0.0);
     }
+    porosity.push_back(0.0);
+    pore_pressure.push_back(0.0);
     mass.push_back(point_mass);
     volume.push_back(point_volume);
     volume0.push_back(point_volume);
@@ -32,8 +35,8 @@ void Particles<D>::add(const double* position, double point_mass, double point_v
 template <int D>
 std::size_t Particles<D>::bytes_per_point() const {
     // x, v, external_force (D); C, F, domain0 (D^2); mass, volume, volume0; stress, strain,
-    // dstrain (6); state; material and field.
-    return (3 * D + 3 * D * D + 3 + 18 + static_cast<std::size_t>(state_stride)) * sizeof(double) + 2 * sizeof(int);
+    // dstrain (6); porosity, pore pressure, w (D); state; material and field.
+    return (4 * D + 3 * D * D + 5 + 18 + static_cast<std::size_t>(state_stride)) * sizeof(double) + 2 * sizeof(int);
 }
 
 template <int D>

@@ -26,6 +26,11 @@ struct Particles {
     std::vector<double> state;    // state_stride per point
     int state_stride = 0;
     std::vector<double> external_force;  // D per point, N (tractions mapped to points)
+    // Pore water (saturated materials; zero for dry ones). The porosity is owned here: models
+    // that keep a void ratio read it from the point.
+    std::vector<double> porosity;        // n, current
+    std::vector<double> pore_pressure;   // excess over hydrostatic, Pa, compression positive
+    std::vector<double> w;               // D per point: water velocity (coupled materials), m/s
 
     std::size_t size() const { return mass.size(); }
     // Bytes each point takes in these arrays.

@@ -22,10 +22,13 @@ enum class BoundaryKind { Fixed, Roller, Absorbing, Frictional };
 // rho c_p on the normal and rho c_s on the tangential components, over each node's
 // tributary face area (x r in axisymmetry). Frictional: a rigid wall the material cannot
 // enter and slides on with Coulomb friction `friction` (it may lift off).
+// Saturated soil: an absorbing boundary's pore-pressure dashpot water_impedance (Pa s/m,
+// on the normal component of the water field) over the same areas; a drained boundary's
+// supports hold the skeleton only, the water flows through.
 template <int D>
 void apply_boundary(Grid<D>& grid, int axis, int side, BoundaryKind kind, double density = 0.0,
                     double p_wave_speed = 0.0, double shear_wave_speed = 0.0, bool axisymmetric = false,
-                    double friction = 0.0);
+                    double friction = 0.0, double water_impedance = 0.0, bool drained = false);
 
 // K0 stress of horizontally layered ground whose surface is at elevation `surface`
 // (vertical axis D-1): sigma_v = -g int rho dz from the surface down, sigma_h = K0 sigma_v,

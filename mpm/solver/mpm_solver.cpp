@@ -11,11 +11,9 @@
 #include <string>
 
 #include "mpm/solver/objective_rotation.hpp"
+#include "mpm/solver/solver_passes.hpp"
 
 namespace pilempm::mpm {
-
-// Below this many points a step is too short to pay for waking threads.
-constexpr long kParallelPoints = 4000;
 
 template <int D>
 MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
@@ -32,56 +30,28 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
             throw std::invalid_argument("material point on velocity field " + std::to_string(m_.particles.field[p]) +
                                         " of a grid with " + std::to_string(m_.grid.fields));
     }
+    drainage_ = m_.drainage;
+    if (drainage_.empty()) drainage_.assign(m_.materials.size(), MaterialDrainage{});
+    if (drainage_.size() != m_.materials.size())
+        throw std::invalid_argument("drainage given for " + std::to_string(drainage_.size()) + " of " +
+                                    std::to_string(m_.materials.size()) + " materials");
+    for (const auto& dr : drainage_) {
+        saturated_ = saturated_ || dr.saturated();
+        coupled_ = coupled_ || dr.drainage == Drainage::Coupled;
+        if (dr.saturated() && !(dr.porosity > 0.0 && dr.porosity < 1.0))
+            throw std::invalid_argument("a saturated material needs a porosity between 0 and 1");
+        if (dr.drainage == Drainage::Coupled && !(dr.darcy_resistance > 0.0))
+            throw std::invalid_argument("a coupled material needs a permeability");
+    }
+    if (coupled_ && !m_.grid.water)
+        throw std::invalid_argument("coupled (v-w) materials need a grid with water fields (Grid::water)");
+    if (m_.grid.water && m_.particles.field.size() > 0)
+        for (const int f : m_.particles.field)
+            if (f % 2 != 0) throw std::invalid_argument("material points move with solid (even) fields of a grid with water");
     stencil_.resize(m_.particles.size());
     mass_ = total_mass();  // points keep their mass: the grid's "empty node" threshold is fixed
 }
 
-namespace {
-
-// Coulomb wall on node velocity v (D values): if v moves into the wall, the normal part is
-// stopped and the tangential part loses at most friction x that normal change.
-template <int D>
-void apply_wall(int wall, double friction, double* v) {
-    const int axis = wall / 2;
-    const bool min_side = wall % 2 == 0;  // the wall lies below (x_axis = min): v_axis >= 0
-    const double vn = v[axis];
-    if (min_side ? vn >= 0.0 : vn <= 0.0) return;  // separating: free
-    v[axis] = 0.0;
-    double vt2 = 0.0;
-    for (int d = 0; d < D; ++d)
-        if (d != axis) vt2 += v[d] * v[d];
-    const double vt = std::sqrt(vt2), cap = friction * std::abs(vn);
-    const double keep = vt > cap ? 1.0 - cap / vt : 0.0;  // slip, or stick
-    for (int d = 0; d < D; ++d)
-        if (d != axis) v[d] *= keep;
-}
-
-}  // namespace
-
-// Asks for the stencil of a point a few ahead: the passes after the scatter find the
-// stencils in memory, not in cache, and would otherwise wait on each.
-template <int D>
-inline void prefetch_stencil(const std::vector<Stencil<D>>& stencils, long i) {
-    constexpr long kAhead = 4;
-    constexpr std::size_t kBytes = sizeof(typename Stencil<D>::Entry) * (D == 2 ? 9 : 27) + 64;  // a uGIMP stencil
-    if (i + kAhead >= static_cast<long>(stencils.size())) return;
-    const char* at = reinterpret_cast<const char*>(&stencils[i + kAhead]);
-    for (std::size_t b = 0; b < kBytes; b += 64) __builtin_prefetch(at + b);
-}
-
-// The velocity a point carries to node k of its stencil: its own, plus with APIC its
-// affine field C (x_node - x_point).
-template <int D>
-inline void MpmSolver<D>::velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C,
-                                        double* out) const {
-    for (int d = 0; d < D; ++d) out[d] = v[d];
-    if (!m_.apic) return;
-    const double* xn = &m_.grid.position[D * s.e[k].node];
-    double dx[D];
-    for (int d = 0; d < D; ++d) dx[d] = xn[d] - s.x[d];
-    for (int d = 0; d < D; ++d)
-        for (int e = 0; e < D; ++e) out[d] += C[D * d + e] * dx[e];
-}
 
 template <int D>
 double MpmSolver<D>::stable_time_step() const {
@@ -92,31 +62,62 @@ double MpmSolver<D>::stable_time_step() const {
     const long n = static_cast<long>(p.size());
 #pragma omp parallel for schedule(static) reduction(max : c_max) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
-        const double rho = p.mass[i] / p.volume[i];
         double speed = 0.0;
         for (int d = 0; d < D; ++d) speed += p.v[D * i + d] * p.v[D * i + d];
-        const double M = m_.materials[p.material[i]]->p_wave_modulus_at(&p.stress[6 * i],
-                                                                       p.state.data() + p.state_stride * i);
-        c_max = std::max(c_max, std::sqrt(M / rho) + std::sqrt(speed));
+        c_max = std::max(c_max, point_wave_speed(i) + std::sqrt(speed));
     }
     return c_max > 0.0 ? m_.cfl * h / c_max : 1e300;
+}
+
+template <int D>
+double MpmSolver<D>::point_wave_speed(long i) const {
+    const auto& p = m_.particles;
+    const double rho = p.mass[i] / p.volume[i];
+    const double M = m_.materials[p.material[i]]->p_wave_modulus_at(&p.stress[6 * i], p.state.data() + p.state_stride * i);
+    const MaterialDrainage& dr = drainage_[p.material[i]];
+    if (!dr.saturated()) return std::sqrt(M / rho);
+    const double n = p.porosity[i];
+    if (dr.drainage == Drainage::Drained) return std::sqrt(M / (rho + n * m_.water.density));
+    const SaturatedWaveSpeeds c = saturated_wave_speeds(M, n, rho, m_.water);
+    return dr.drainage == Drainage::Undrained ? c.undrained : c.fastest;
+}
+
+template <int D>
+TimeStepLimit MpmSolver<D>::time_step_limit() const {
+    const auto& p = m_.particles;
+    double h = m_.grid.spacing[0];
+    for (int d = 1; d < D; ++d) h = std::min(h, m_.grid.spacing[d]);
+    TimeStepLimit limit;
+    long at = -1;
+    for (long i = 0; i < static_cast<long>(p.size()); ++i) {
+        double speed = 0.0;
+        for (int d = 0; d < D; ++d) speed += p.v[D * i + d] * p.v[D * i + d];
+        const double c = point_wave_speed(i) + std::sqrt(speed);
+        if (c > limit.wave_speed) limit.wave_speed = c, at = i;
+        const MaterialDrainage& dr = drainage_[p.material[i]];
+        if (dr.drainage == Drainage::Coupled) {
+            // Drag relaxation time rho_w / (n mu/kappa) = k / (n g); explicit Euler needs dt < twice it.
+            const double explicit_drag = 2.0 * m_.water.density / (p.porosity[i] * dr.darcy_resistance);
+            limit.explicit_drag_limit =
+                limit.explicit_drag_limit > 0.0 ? std::min(limit.explicit_drag_limit, explicit_drag) : explicit_drag;
+        }
+    }
+    limit.dt = limit.wave_speed > 0.0 ? m_.cfl * h / limit.wave_speed : 1e300;
+    if (at >= 0) {
+        const Drainage d = drainage_[p.material[at]].drainage;
+        limit.limited_by = std::string(d == Drainage::Coupled ? "fastest v-w P-wave" : d == Drainage::Undrained
+                                                                                          ? "undrained P-wave"
+                                                                                          : "P-wave") +
+                           " of material " + std::to_string(p.material[at]) + " (" + drainage_name(d) + ")";
+    }
+    return limit;
 }
 
 // The D half-edge vectors of point i's domain (row k = vector k): undeformed for uGIMP,
 // F-deformed for CPDI.
 template <int D>
 void MpmSolver<D>::half_edges(long i, double* half) const {
-    const auto& p = m_.particles;
-    for (int k = 0; k < D; ++k)
-        for (int d = 0; d < D; ++d) {
-            double v = 0.0;
-            if (m_.shape == ShapeKind::CPDI) {
-                for (int e = 0; e < D; ++e) v += p.F[D * D * i + D * d + e] * p.domain0[D * D * i + D * k + e];
-            } else {
-                v = p.domain0[D * D * i + D * k + d];
-            }
-            half[D * k + d] = 0.5 * v;
-        }
+    half_domain_edges<D>(m_.particles, i, m_.shape, half);
 }
 
 // Marks the blocks holding the nodes whose hats reach the box x +- extent (x in the grid);
@@ -277,42 +278,6 @@ void MpmSolver<D>::build_stencil(long i) {
                       m_.particles.field[i]);
 }
 
-// Each chunk of points accumulates into its own buffer of `values` per stored node (all
-// fields), over the slots its points reach only; then the buffers are summed into `out`:
-// scatter without atomics, deterministic for a fixed thread count.
-template <int D>
-template <class Accumulate>
-void MpmSolver<D>::scatter(int values, Accumulate&& accumulate, std::vector<double>& out) {
-    const int chunks = static_cast<int>(chunk_blocks_.size() / 2);
-    const std::size_t per_slot = static_cast<std::size_t>(values) * Grid<D>::kBlockNodes;
-    const std::size_t size = per_slot * m_.grid.active_blocks();
-    thread_buffer_.resize(chunks);
-#pragma omp parallel for schedule(static, 1) num_threads(chunks)
-    for (int chunk = 0; chunk < chunks; ++chunk) {
-        auto& buf = thread_buffer_[chunk];
-        const int first = chunk_blocks_[2 * chunk], last = chunk_blocks_[2 * chunk + 1];
-        if (first < 0) {
-            buf.clear();
-            continue;
-        }
-        buf.assign(per_slot * (last - first + 1), 0.0);
-        // Entry k of the grid is buf[k - first slot's first entry].
-        double* base = buf.data() - per_slot * first;
-        for (long i = chunk_begin(chunk, chunks); i < chunk_begin(chunk + 1, chunks); ++i) accumulate(i, base);
-    }
-    if (chunks == 1 && chunk_blocks_[0] == 0 && thread_buffer_[0].size() == size) {
-        out.swap(thread_buffer_[0]);  // one chunk over every block: its sums are the result
-        return;
-    }
-    out.assign(size, 0.0);
-    for (int chunk = 0; chunk < chunks; ++chunk) {
-        const auto& buf = thread_buffer_[chunk];
-        if (buf.empty()) continue;
-        double* into = out.data() + per_slot * chunk_blocks_[2 * chunk];
-        for (std::size_t k = 0; k < buf.size(); ++k) into[k] += buf[k];
-    }
-}
-
 // Per grid entry: mass, momentum, total force, and (PointForces) the forces applied to points
 // (contact), which the external force of the equilibrium measure needs besides m_i g.
 template <int D>
@@ -379,7 +344,9 @@ template <int D>
 void MpmSolver<D>::particles_to_grid() {
     auto& p = m_.particles;
     auto& g = m_.grid;
-    if (std::any_of(p.external_force.begin(), p.external_force.end(), [](double f) { return f != 0.0; }))
+    if (saturated_)
+        scatter_saturated();
+    else if (std::any_of(p.external_force.begin(), p.external_force.end(), [](double f) { return f != 0.0; }))
         scatter_to_grid<true>();
     else
         scatter_to_grid<false>();
@@ -400,10 +367,14 @@ void MpmSolver<D>::particles_to_grid() {
 
 template <int D>
 void MpmSolver<D>::update_grid(double dt) {
+    if (coupled_) {
+        update_grid_coupled(dt);
+        return;
+    }
     auto& g = m_.grid;
     const int fields = g.fields, nodes = g.stored_nodes(), nf = nodes * fields;
     const double tiny = empty_node_mass();
-    double unbalanced = 0.0, applied = 0.0;
+    double applied = 0.0;
     residual_.assign(D * nf, 0.0);
     for (int n = 0; n < nodes; ++n) {
         NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
@@ -443,6 +414,17 @@ void MpmSolver<D>::update_grid(double dt) {
             }
         }
     }
+    walls_and_balance(dt, applied);
+}
+
+// Rigid walls, then the unbalanced force ratio. The skeleton slides on a wall with its
+// friction; pore water may not enter it either (no friction: its push acts on the water's
+// inertia in the mixture).
+template <int D>
+void MpmSolver<D>::walls_and_balance(double dt, double applied) {
+    auto& g = m_.grid;
+    const int fields = g.fields, nodes = g.stored_nodes();
+    const double tiny = empty_node_mass();
     for (int n = 0; n < nodes; ++n) {
         if (g.condition_at[n] < 0) continue;
         NodeCondition& cond = g.conditions[g.condition_at[n]];
@@ -450,12 +432,14 @@ void MpmSolver<D>::update_grid(double dt) {
         for (int f = 0; f < fields; ++f) {
             const int nodef = n * fields + f;
             if (g.mass[nodef] <= tiny) continue;
+            const bool water = g.water && f % 2 == 1;
             double v[D];
             for (int d = 0; d < D; ++d) v[d] = g.velocity[D * nodef + d];
-            apply_wall<D>(cond.wall, cond.wall_friction, v);
+            apply_wall<D>(cond.wall, water ? 0.0 : cond.wall_friction, v);
+            const double inertia = water ? g.water_inertia[nodef - 1] : g.mass[nodef];
             for (int d = 0; d < D; ++d) {
                 const int k = D * nodef + d;
-                const double push = g.mass[nodef] * (v[d] - g.velocity[k]) / dt;  // the wall's push and friction
+                const double push = inertia * (v[d] - g.velocity[k]) / dt;  // the wall's push and friction
                 cond.reaction[d] += push;
                 residual_[k] += push;
                 g.acceleration[k] += (v[d] - g.velocity[k]) / dt;
@@ -463,6 +447,7 @@ void MpmSolver<D>::update_grid(double dt) {
             }
         }
     }
+    double unbalanced = 0.0;
     for (int n = 0; n < nodes; ++n) {
         const NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
         for (int f = 0; f < fields; ++f) {
@@ -520,17 +505,41 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
     auto& p = m_.particles;
     auto& g = m_.grid;
     const int fields = g.fields;
-    scatter(D * fields, [&](long i, double* buf) {
-        grid_to_point(i, dt);
-        const Stencil<D>& s = stencil_[i];
-        const double* C = &p.C[D * D * i];
-        for (int k = 0; k < s.count; ++k) {
-            double vn[D];
-            velocity_toward_node(s, k, &p.v[D * i], C, vn);
-            double* b = buf + D * s.e[k].node;
-            for (int d = 0; d < D; ++d) b[d] += s.e[k].N * p.mass[i] * vn[d];
-        }
-    }, scratch_);
+    if (!saturated_) {
+        scatter(D * fields, [&](long i, double* buf) {
+            grid_to_point(i, dt);
+            const Stencil<D>& s = stencil_[i];
+            const double* C = &p.C[D * D * i];
+            for (int k = 0; k < s.count; ++k) {
+                double vn[D];
+                velocity_toward_node(s, k, &p.v[D * i], C, vn);
+                double* b = buf + D * s.e[k].node;
+                for (int d = 0; d < D; ++d) b[d] += s.e[k].N * p.mass[i] * vn[d];
+            }
+        }, scratch_);
+    } else {
+        // The solid field carries the mass the scatter gave it (with the water of drained and
+        // undrained points); a coupled point's water goes to its water field.
+        const double rho_w = m_.water.density;
+        scatter(D * fields, [&](long i, double* buf) {
+            if (coupled_) water_to_point(i, dt);
+            grid_to_point(i, dt);
+            const Stencil<D>& s = stencil_[i];
+            const double* C = &p.C[D * D * i];
+            const Drainage dr = drainage_[p.material[i]].drainage;
+            const double water = p.porosity[i] * rho_w * p.volume[i];
+            const double inertia = dr == Drainage::Dry || dr == Drainage::Coupled ? p.mass[i] : p.mass[i] + water;
+            const double water_mass = dr == Drainage::Coupled ? rho_w * p.volume[i] : 0.0;
+            for (int k = 0; k < s.count; ++k) {
+                double vn[D];
+                velocity_toward_node(s, k, &p.v[D * i], C, vn);
+                double* b = buf + D * s.e[k].node;
+                for (int d = 0; d < D; ++d) b[d] += s.e[k].N * inertia * vn[d];
+                if (water_mass > 0.0)
+                    for (int d = 0; d < D; ++d) b[D + d] += s.e[k].N * water_mass * p.w[D * i + d];
+            }
+        }, scratch_);
+    }
     const int nodes = g.stored_nodes();
     const double tiny = empty_node_mass();
     for (int n = 0; n < nodes; ++n) {
@@ -539,8 +548,11 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
             const int nodef = n * fields + f;
             for (int d = 0; d < D; ++d) {
                 const int k = D * nodef + d;
-                g.velocity[k] = cond && cond->fixed[d] ? cond->prescribed[d]
-                                                       : (g.mass[nodef] > tiny ? scratch_[k] / g.mass[nodef] : 0.0);
+                // A water field at a drained boundary is free; at any other it is held with the solid.
+                const bool water_entry = g.water && f % 2 == 1;
+                const bool held = cond && cond->fixed[d] && !(water_entry && cond->drained);
+                g.velocity[k] = held ? cond->prescribed[d]
+                                     : (g.mass[nodef] > tiny ? scratch_[k] / g.mass[nodef] : 0.0);
             }
             // The remapped velocities may not enter a wall either (friction was applied above).
             if (cond && cond->wall >= 0) {
@@ -557,6 +569,7 @@ void MpmSolver<D>::update_stress(double dt) {
     const auto& g = m_.grid;
     const long n = static_cast<long>(p.size());
     int inverted = 0;
+    if (saturated_) volume_before_.resize(p.size());
 #pragma omp parallel for schedule(static) reduction(+ : inverted) if (n > kParallelPoints)
     for (long i = 0; i < n; ++i) {
         prefetch_stencil(stencil_, i);
@@ -609,11 +622,13 @@ void MpmSolver<D>::update_stress(double dt) {
                                 Fn[2] * (Fn[3] * Fn[7] - Fn[4] * Fn[6]);
         if (!(J > 0.0)) ++inverted;
         // Volume per radian in axisymmetry grows with the hoop stretch too.
+        if (saturated_) volume_before_[i] = p.volume[i];
         if (m_.axisymmetric) p.volume[i] *= 1.0 + de[0] + de[1] + de[2];
         else p.volume[i] = p.volume0[i] * J;
         for (int k = 0; k < 6; ++k) p.strain[6 * i + k] += de[k];
     }
     if (inverted > 0) throw std::runtime_error(std::to_string(inverted) + " material point(s) turned inside out (J <= 0)");
+    if (saturated_) update_pore_water(dt);
     for (std::size_t mat = 0; mat < m_.materials.size(); ++mat) {
         const auto& pts = points_of_material_[mat];
         const int count = static_cast<int>(pts.size());
@@ -659,12 +674,21 @@ MpmMemory MpmSolver<D>::memory() const {
     return mem;
 }
 
+// The pore water of saturated points moves with the skeleton (drained, undrained) or at
+// its own velocity w (coupled); both count.
 template <int D>
 double MpmSolver<D>::kinetic_energy() const {
     const auto& p = m_.particles;
     double e = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        for (int d = 0; d < D; ++d) e += 0.5 * p.mass[i] * p.v[D * i + d] * p.v[D * i + d];
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Drainage dr = drainage_[p.material[i]].drainage;
+        const double water = dr == Drainage::Dry ? 0.0 : p.porosity[i] * m_.water.density * p.volume[i];
+        const double with_skeleton = dr == Drainage::Coupled ? p.mass[i] : p.mass[i] + water;
+        for (int d = 0; d < D; ++d) {
+            e += 0.5 * with_skeleton * p.v[D * i + d] * p.v[D * i + d];
+            if (dr == Drainage::Coupled) e += 0.5 * water * p.w[D * i + d] * p.w[D * i + d];
+        }
+    }
     return e;
 }
 
@@ -672,8 +696,15 @@ template <int D>
 std::array<double, D> MpmSolver<D>::momentum() const {
     std::array<double, D> q{};
     const auto& p = m_.particles;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        for (int d = 0; d < D; ++d) q[d] += p.mass[i] * p.v[D * i + d];
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Drainage dr = drainage_[p.material[i]].drainage;
+        const double water = dr == Drainage::Dry ? 0.0 : p.porosity[i] * m_.water.density * p.volume[i];
+        const double with_skeleton = dr == Drainage::Coupled ? p.mass[i] : p.mass[i] + water;
+        for (int d = 0; d < D; ++d) {
+            q[d] += with_skeleton * p.v[D * i + d];
+            if (dr == Drainage::Coupled) q[d] += water * p.w[D * i + d];
+        }
+    }
     return q;
 }
 

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "mpm/materials/constitutive_model.hpp"
+#include "mpm/materials/pore_water.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/points/particles.hpp"
 #include "mpm/grid/shape_functions.hpp"
@@ -38,6 +40,25 @@ struct MpmModel {
     double cfl = 0.5;                   // of the P-wave crossing time of a cell
     double local_damping = 0.0;         // Cundall's alpha (quasi-static stages)
     std::vector<SurfaceLoad> surface_loads;  // the active ones; set between steps
+    // Saturated soil: per material how it drains (empty: all dry), and the pore water. A
+    // coupled material needs a grid with water fields (Grid::water).
+    std::vector<MaterialDrainage> drainage;
+    PoreWater water;
+    bool saturated() const {
+        for (const auto& d : drainage)
+            if (d.saturated()) return true;
+        return false;
+    }
+};
+
+// What sets the stable time step, for `pilempm check` and logs.
+struct TimeStepLimit {
+    double dt = 0.0;               // s
+    std::string limited_by;        // the wave that sets it, and at which point
+    double wave_speed = 0.0;       // m/s, that wave's speed plus the point's speed
+    // Coupled materials: the step an explicit Darcy drag would need, 2 k / (n g) (Mieremet
+    // et al. 2016); the drag here is semi-implicit, so it does not limit. 0: none coupled.
+    double explicit_drag_limit = 0.0;
 };
 
 // What a step carries over besides the model: the clock and the energy ledger. A resumed run
@@ -62,6 +83,7 @@ class MpmSolver {
 public:
     explicit MpmSolver(MpmModel<D>& model);
     double stable_time_step() const;
+    TimeStepLimit time_step_limit() const;
     void step(double dt);
     // Stores the grid blocks the points reach (each step does it first); throws when a point
     // has left the grid.
@@ -106,13 +128,26 @@ private:
     template <bool PointForces>
     void scatter_to_grid();
     void update_grid(double dt);
+    void walls_and_balance(double dt, double applied);
     void grid_to_point(long i, double dt);
     void update_points_and_remap(double dt);
     void update_stress(double dt);
+    // Saturated soil (mpm_solver_pore_water.cpp): the scatter with buoyancy, the mixture's
+    // stress and the water field; the coupled v-w grid update with semi-implicit drag; the
+    // water's velocity on the points; the excess pore pressure and porosity.
+    void scatter_saturated();
+    void update_grid_coupled(double dt);
+    void water_to_point(long i, double dt);
+    void update_pore_water(double dt);
+    double point_wave_speed(long i) const;  // P-wave speed for the stable step, m/s
     template <class Accumulate>
     void scatter(int values, Accumulate&& accumulate, std::vector<double>& out);
 
     MpmModel<D>& m_;
+    bool saturated_ = false;  // some material holds water
+    bool coupled_ = false;    // ... with its own velocity field (v-w)
+    std::vector<MaterialDrainage> drainage_;  // per material (dry when the model gives none)
+    std::vector<double> volume_before_;       // per point: volume before this step's update
     std::vector<Stencil<D>> stencil_;
     std::vector<std::vector<int>> points_of_material_;
     std::vector<int> tensor_states_;  // per material: symmetric tensors rotated with the stress

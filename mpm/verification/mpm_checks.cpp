@@ -5,11 +5,10 @@
 #include <stdexcept>
 
 #include "mpm/analysis/granular_collapse.hpp"
+#include "mpm/verification/pore_water_checks.hpp"
 
 namespace pilempm::mpm {
 
-
-namespace {
 
 double parameter(const MpmCheckContext& c, const char* key, const char* check) {
     auto it = c.parameters.find(key);
@@ -23,6 +22,8 @@ const std::vector<double>& column(const Table& t, const std::string& name) {
         if (t.columns[k] == name) return t.data[k];
     throw std::invalid_argument("history has no column " + name + " (add output.probes)");
 }
+
+namespace {
 
 // Max error of the vertical stress against rho g (original depth), over rho g H.
 template <int D>
@@ -73,6 +74,8 @@ std::vector<VerificationCheck> lame(const MpmCheckContext& c, const MpmModel<2>&
                        "Lame solution against the cell-averaged point stresses, every cell")};
 }
 
+}  // namespace
+
 // Half-amplitude arrival of the pulse at a probe (linear between samples).
 double arrival(const std::vector<double>& t, const std::vector<double>& v, double plateau, double& dt) {
     double when = -1.0;
@@ -83,6 +86,8 @@ double arrival(const std::vector<double>& t, const std::vector<double>& v, doubl
     }
     return when;
 }
+
+namespace {
 
 // Travel time of the pulse between two probes `depth` apart: the wave speed, free of how
 // the surface load enters the first row of points. A P-wave (a pressure pulse) is timed on
@@ -267,6 +272,17 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
             auto v = runout<D>(c, m);
             out.insert(out.end(), v.begin(), v.end());
         }
+        else if (name == "terzaghi_consolidation") {
+            auto v = terzaghi_consolidation<D>(c, m, x0, history);
+            out.insert(out.end(), v.begin(), v.end());
+        } else if (name == "undrained_wave_speed" || name == "fast_wave_speed") {
+            auto v = saturated_wave_arrival<D>(c, m, history, name == "fast_wave_speed");
+            out.insert(out.end(), v.begin(), v.end());
+        }
+        else if (name == "hydrostatic_equilibrium") {
+            auto v = hydrostatic_equilibrium<D>(c, m, x0);
+            out.insert(out.end(), v.begin(), v.end());
+        } else if (name == "skempton_b") out.push_back(skempton_b_check<D>(c, m));
         else throw std::invalid_argument("verification check " + name + " is not available yet for MPM cases");
     }
     return out;

@@ -35,6 +35,14 @@ pilempm_case_test(verify_element_test_subloading_cam_clay cases/element-tests/su
 pilempm_case_test(verify_element_test_subloading_cam_clay_ocr4 cases/element-tests/subloading-cam-clay-fontainebleau-ocr4.yaml verification)
 pilempm_case_test(verify_element_test_hardening_soil_small cases/element-tests/hardening-soil-small-north-sea-dense-sand.yaml verification)
 pilempm_case_test(verify_mpm_k0_hardening_soil_small cases/verification/mpm-k0-hardening-soil-small.yaml verification)
+# Saturated soil, explicit v-w (issue 12): Terzaghi, the undrained and the fast P-wave,
+# absorbing boundaries for both phases, hydrostatic equilibrium under 40 m of water, Skempton's B.
+pilempm_case_test(verify_terzaghi_explicit cases/verification/terzaghi-explicit.yaml verification)
+pilempm_case_test(verify_saturated_wave_undrained cases/verification/saturated-wave-undrained.yaml verification)
+pilempm_case_test(verify_saturated_wave_fast cases/verification/saturated-wave-fast.yaml verification)
+pilempm_case_test(verify_hydrostatic_seabed cases/verification/hydrostatic-seabed.yaml verification)
+pilempm_case_test(verify_skempton_b cases/verification/skempton-b.yaml verification)
+pilempm_case_test(verify_skempton_b_compressible cases/verification/skempton-b-compressible.yaml verification)
 # Full-size runs (label long, not in CI: ctest --test-dir build -L long).
 # Granular column collapse, Mohr-Coulomb: the final height against Lube et al. on grid
 # sequences of three (11-17 min each on one core).
