@@ -3,9 +3,11 @@
 # missing. As root it runs apt-get; otherwise it names what to install and fails.
 set -euo pipefail
 
+# Trilinos' CMake targets name /usr/lib/.../lib{pt,}scotch.so, which only the scotch -dev
+# packages install (trilinos-all-dev does not pull them in).
 packages=(build-essential gfortran cmake ninja-build pkg-config libeigen3-dev libhdf5-dev libvtk9-dev
           libgmsh-dev libopenmpi-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev
-          python3-matplotlib)
+          trilinos-all-dev libscotch-dev libptscotch-dev python3-matplotlib)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,430 @@
+// The one file that sees Trilinos (Tpetra, Belos, Ifpack2, MueLu; Amesos2 KLU2 through
+// Ifpack2's Amesos2 wrapper). Debian's Trilinos 13.2 is instantiated for double, int local
+// and long long global indices on Kokkos' Serial node only: the default template arguments.
+#include "core/linear_algebra/sparse_linear_solver.hpp"
+
+#include <BelosLinearProblem.hpp>
+#include <BelosSolverFactory_Tpetra.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Ifpack2_Factory.hpp>
+#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+namespace pilempm::core {
+
+namespace {
+
+using Map = Tpetra::Map<>;
+using LO = Map::local_ordinal_type;
+using GO = Map::global_ordinal_type;
+using Node = Map::node_type;
+using CrsMatrix = Tpetra::CrsMatrix<double, LO, GO, Node>;
+using RowMatrix = Tpetra::RowMatrix<double, LO, GO, Node>;
+using MultiVector = Tpetra::MultiVector<double, LO, GO, Node>;
+using Operator = Tpetra::Operator<double, LO, GO, Node>;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+bool all_finite(const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+double norm2(const std::vector<double>& v) {
+    return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// MPI (when nobody has) and Kokkos once per process; finalised by atexit, which runs after
+// the static objects constructed later (Tpetra's own caches) are destroyed. MPI is needed
+// even for one process: Debian's Trilinos is the MPI build and MueLu's hierarchy summary
+// casts the communicator to Teuchos::MpiComm (a Teuchos::SerialComm crashes there).
+void initialise_trilinos() {
+    static const bool initialised = [] {
+        if (!Tpetra::isInitialized()) {
+            int argc = 0;
+            char** argv = nullptr;
+            Tpetra::initialize(&argc, &argv, MPI_COMM_SELF);
+            std::atexit([] { Tpetra::finalize(); });
+        }
+        return true;
+    }();
+    (void)initialised;
+}
+
+std::string method_name(const SolverOptions& o) {
+    switch (o.method) {
+        case KrylovMethod::gmres: return "GMRES(" + std::to_string(o.gmres_restart) + ")";
+        case KrylovMethod::cg: return "CG";
+        case KrylovMethod::bicgstab: return "BiCGStab";
+        case KrylovMethod::direct: return "KLU2";
+    }
+    return "?";
+}
+
+std::string preconditioner_name(const SolverOptions& o) {
+    if (o.method == KrylovMethod::direct) return "none";
+    switch (o.preconditioner) {
+        case Preconditioner::none: return "none";
+        case Preconditioner::jacobi: return "Jacobi x" + std::to_string(o.relaxation_sweeps);
+        case Preconditioner::ilu: return "ILU(" + std::to_string(o.ilu_level) + ")";
+        case Preconditioner::ilut: {
+            std::string fill = std::to_string(o.ilut_fill);
+            fill.erase(fill.find_last_not_of('0') + 1);
+            if (fill.back() == '.') fill.pop_back();
+            return "ILUT(" + fill + ")";
+        }
+        case Preconditioner::multigrid: return "MueLu SA";
+    }
+    return "?";
+}
+
+// Teuchos' exception text on one line, without its blank lines and "Throw number = N".
+std::string one_line(const std::string& text) {
+    std::string out, line;
+    std::istringstream in(text);
+    while (std::getline(in, line)) {
+        const bool blank = line.find_first_not_of(" \t") == std::string::npos;
+        if (blank || line.rfind("Throw number", 0) == 0) continue;
+        if (!out.empty()) out += out.back() == ':' ? " " : "; ";
+        out += line;
+    }
+    return out;
+}
+
+// Runs one stage that calls Trilinos; anything it throws comes out as std::runtime_error
+// naming the solve and the stage.
+template <class F>
+auto guarded(const std::string& what, const std::string& stage, F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const std::exception& e) {
+        throw std::runtime_error("pilempm::core::solve (" + what + "): " + stage + " failed: " +
+                                 one_line(e.what()));
+    } catch (...) {
+        throw std::runtime_error("pilempm::core::solve (" + what + "): " + stage +
+                                 " failed with an unknown exception");
+    }
+}
+
+RCP<CrsMatrix> to_tpetra(const SparseMatrix& a, const RCP<const Map>& map) {
+    const std::size_t n = static_cast<std::size_t>(a.size());
+    Teuchos::ArrayRCP<std::size_t> start(n + 1);
+    Teuchos::ArrayRCP<LO> columns(a.nonzeros());
+    Teuchos::ArrayRCP<double> values(a.nonzeros());
+    std::copy(a.row_start().begin(), a.row_start().end(), start.begin());
+    std::copy(a.columns().begin(), a.columns().end(), columns.begin());
+    std::copy(a.values().begin(), a.values().end(), values.begin());
+    auto m = rcp(new CrsMatrix(map, map, start, columns, values));
+    m->fillComplete(map, map);
+    return m;
+}
+
+void copy_in(const std::vector<double>& v, MultiVector& mv) {
+    auto data = mv.getDataNonConst(0);
+    std::copy(v.begin(), v.end(), data.begin());
+}
+
+void copy_out(const MultiVector& mv, std::vector<double>& v) {
+    auto data = mv.getData(0);
+    std::copy(data.begin(), data.end(), v.begin());
+}
+
+RCP<Operator> make_preconditioner(const SolverOptions& o, const RCP<CrsMatrix>& a) {
+    if (o.preconditioner == Preconditioner::multigrid) {
+        Teuchos::ParameterList p;
+        p.set("verbosity", "none");
+        p.set("multigrid algorithm", "sa");
+        p.set("problem: symmetric", o.multigrid_symmetric);
+        p.set("smoother: type", "RELAXATION");
+        p.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+        p.sublist("smoother: params").set("relaxation: sweeps", 1);
+        p.set("coarse: type", "KLU2");
+        RCP<Operator> op = a;
+        return MueLu::CreateTpetraPreconditioner(op, p);
+    }
+    std::string type;
+    Teuchos::ParameterList p;
+    switch (o.preconditioner) {
+        case Preconditioner::jacobi:
+            type = "RELAXATION";
+            p.set("relaxation: type", "Jacobi");
+            p.set("relaxation: sweeps", o.relaxation_sweeps);
+            p.set("relaxation: damping factor", o.relaxation_damping);
+            break;
+        case Preconditioner::ilu:
+            type = "RILUK";
+            p.set("fact: iluk level-of-fill", o.ilu_level);
+            break;
+        case Preconditioner::ilut:
+            type = "ILUT";
+            p.set("fact: ilut level-of-fill", o.ilut_fill);
+            p.set("fact: drop tolerance", o.ilut_drop_tolerance);
+            break;
+        default: return Teuchos::null;
+    }
+    auto prec = Ifpack2::Factory::create<RowMatrix>(type, a);
+    prec->setParameters(p);
+    prec->initialize();
+    prec->compute();
+    return prec;
+}
+
+// x = LU \ b, then up to two steps of iterative refinement while the residual is above the
+// tolerance. Returns the number of triangular solves.
+int direct_solve(const SparseMatrix& a, const RCP<CrsMatrix>& ta, const std::vector<double>& b,
+                 std::vector<double>& x, const SolverOptions& o, const std::string& what,
+                 SolveReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    auto lu = guarded(what, "factorisation", [&] {
+        auto prec = Ifpack2::Factory::create<RowMatrix>("AMESOS2", ta);
+        Teuchos::ParameterList p;  // Ifpack2 wants a sublist "Amesos2", even an empty one
+        p.sublist("Amesos2");
+        p.set("Amesos2 solver name", "KLU2");
+        prec->setParameters(p);
+        prec->initialize();
+        prec->compute();
+        return prec;
+    });
+    report.setup_seconds += seconds_since(start);
+    const auto solve_start = std::chrono::steady_clock::now();
+    MultiVector r(ta->getRangeMap(), 1), dx(ta->getDomainMap(), 1);
+    std::vector<double> residual = b, ax(b.size()), correction(b.size());
+    std::fill(x.begin(), x.end(), 0.0);
+    const double b_norm = norm2(b);
+    int solves = 0;
+    for (; solves < 3; ++solves) {
+        if (solves > 0 && norm2(residual) <= o.relative_tolerance * b_norm) break;
+        copy_in(residual, r);
+        guarded(what, "triangular solve", [&] { lu->apply(r, dx); });
+        copy_out(dx, correction);
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] += correction[i];
+        a.multiply(x, ax);
+        for (std::size_t i = 0; i < x.size(); ++i) residual[i] = b[i] - ax[i];
+    }
+    report.solve_seconds = seconds_since(solve_start);
+    return solves;
+}
+
+int krylov_solve(const RCP<CrsMatrix>& ta, const std::vector<double>& b, std::vector<double>& x,
+                 const SolverOptions& o, const std::string& what, SolveReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    RCP<Operator> prec =
+        guarded(what, "preconditioner setup", [&] { return make_preconditioner(o, ta); });
+    report.setup_seconds += seconds_since(start);
+
+    const auto solve_start = std::chrono::steady_clock::now();
+    auto tb = rcp(new MultiVector(ta->getRangeMap(), 1));
+    auto tx = rcp(new MultiVector(ta->getDomainMap(), 1));
+    copy_in(b, *tb);
+    copy_in(x, *tx);
+    const int iterations = guarded(what, "Krylov solve", [&] {
+        auto params = Teuchos::parameterList();
+        params->set("Convergence Tolerance", o.relative_tolerance);
+        params->set("Maximum Iterations", o.max_iterations);
+        params->set("Verbosity", static_cast<int>(Belos::Errors));
+        params->set("Output Stream", Teuchos::rcpFromRef(std::cerr));
+        params->set("Implicit Residual Scaling", "Norm of RHS");
+        std::string name;
+        if (o.method == KrylovMethod::gmres) {
+            name = "GMRES";
+            params->set("Num Blocks", o.gmres_restart);
+            params->set("Maximum Restarts", o.max_iterations / std::max(o.gmres_restart, 1) + 1);
+            params->set("Explicit Residual Scaling", "Norm of RHS");
+        } else if (o.method == KrylovMethod::cg) {
+            name = "CG";
+        } else {
+            name = "BICGSTAB";
+        }
+        Belos::SolverFactory<double, MultiVector, Operator> factory;
+        auto solver = factory.create(name, params);
+        auto problem = rcp(new Belos::LinearProblem<double, MultiVector, Operator>(ta, tx, tb));
+        // CG keeps A symmetric by preconditioning from the left (its residual is still
+        // b - A x); the others precondition from the right, so theirs is the true residual.
+        if (prec != Teuchos::null) {
+            if (o.method == KrylovMethod::cg) problem->setLeftPrec(prec);
+            else problem->setRightPrec(prec);
+        }
+        if (!problem->setProblem())
+            throw std::runtime_error("Belos::LinearProblem::setProblem() refused the system");
+        solver->setProblem(problem);
+        solver->solve();
+        return solver->getNumIters();
+    });
+    copy_out(*tx, x);
+    report.solve_seconds = seconds_since(solve_start);
+    return iterations;
+}
+
+}  // namespace
+
+// --- SparseMatrix --------------------------------------------------------------------------
+
+SparseMatrix::SparseMatrix(int n, const std::vector<Triplet>& triplets) : n_(n) {
+    if (n < 0) throw std::invalid_argument("SparseMatrix: negative size " + std::to_string(n));
+    for (const Triplet& t : triplets) {
+        if (t.row < 0 || t.row >= n || t.col < 0 || t.col >= n)
+            throw std::invalid_argument("SparseMatrix: entry (" + std::to_string(t.row) + ", " +
+                                        std::to_string(t.col) + ") outside a matrix of size " +
+                                        std::to_string(n));
+        if (!std::isfinite(t.value))
+            throw std::invalid_argument("SparseMatrix: entry (" + std::to_string(t.row) + ", " +
+                                        std::to_string(t.col) + ") is not finite");
+    }
+    // Sort the triplets' indices by (row, col), then sum runs of equal (row, col).
+    std::vector<std::size_t> order(triplets.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+        const Triplet &a = triplets[i], &b = triplets[j];
+        return a.row != b.row ? a.row < b.row : a.col < b.col;
+    });
+    row_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+    columns_.reserve(triplets.size());
+    values_.reserve(triplets.size());
+    int last_row = -1, last_col = -1;
+    for (std::size_t k : order) {
+        const Triplet& t = triplets[k];
+        if (t.row == last_row && t.col == last_col) {
+            values_.back() += t.value;
+            continue;
+        }
+        columns_.push_back(t.col);
+        values_.push_back(t.value);
+        ++row_start_[static_cast<std::size_t>(t.row) + 1];
+        last_row = t.row;
+        last_col = t.col;
+    }
+    std::partial_sum(row_start_.begin(), row_start_.end(), row_start_.begin());
+}
+
+std::size_t SparseMatrix::find(int row, int col) const {
+    if (row < 0 || row >= n_) return nonzeros();
+    const auto first = columns_.begin() + static_cast<std::ptrdiff_t>(row_start_[row]);
+    const auto last = columns_.begin() + static_cast<std::ptrdiff_t>(row_start_[row + 1]);
+    const auto it = std::lower_bound(first, last, col);
+    return it != last && *it == col ? static_cast<std::size_t>(it - columns_.begin()) : nonzeros();
+}
+
+double SparseMatrix::operator()(int row, int col) const {
+    const std::size_t k = find(row, col);
+    return k < nonzeros() ? values_[k] : 0.0;
+}
+
+void SparseMatrix::set_zero() { std::fill(values_.begin(), values_.end(), 0.0); }
+
+void SparseMatrix::add(int row, int col, double value) {
+    const std::size_t k = find(row, col);
+    if (k == nonzeros())
+        throw std::out_of_range("SparseMatrix::add: (" + std::to_string(row) + ", " +
+                                std::to_string(col) + ") is not in the pattern");
+    if (!std::isfinite(value))
+        throw std::invalid_argument("SparseMatrix::add: value at (" + std::to_string(row) + ", " +
+                                    std::to_string(col) + ") is not finite");
+    values_[k] += value;
+}
+
+void SparseMatrix::multiply(const std::vector<double>& x, std::vector<double>& y) const {
+    if (x.size() != static_cast<std::size_t>(n_))
+        throw std::invalid_argument("SparseMatrix::multiply: x has " + std::to_string(x.size()) +
+                                    " entries for a matrix of size " + std::to_string(n_));
+    y.resize(static_cast<std::size_t>(n_));
+    for (int i = 0; i < n_; ++i) {
+        double sum = 0.0;
+        for (std::size_t k = row_start_[i]; k < row_start_[i + 1]; ++k)
+            sum += values_[k] * x[static_cast<std::size_t>(columns_[k])];
+        y[static_cast<std::size_t>(i)] = sum;
+    }
+}
+
+// --- solve ---------------------------------------------------------------------------------
+
+std::string to_string(KrylovMethod method) {
+    switch (method) {
+        case KrylovMethod::gmres: return "GMRES";
+        case KrylovMethod::cg: return "CG";
+        case KrylovMethod::bicgstab: return "BiCGStab";
+        case KrylovMethod::direct: return "direct";
+    }
+    return "?";
+}
+
+std::string to_string(Preconditioner preconditioner) {
+    switch (preconditioner) {
+        case Preconditioner::none: return "none";
+        case Preconditioner::jacobi: return "Jacobi";
+        case Preconditioner::ilu: return "ILU";
+        case Preconditioner::ilut: return "ILUT";
+        case Preconditioner::multigrid: return "multigrid";
+    }
+    return "?";
+}
+
+SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vector<double>& x,
+                  const SolverOptions& options) {
+    const std::size_t n = static_cast<std::size_t>(a.size());
+    if (x.empty()) x.assign(n, 0.0);
+    if (b.size() != n || x.size() != n)
+        throw std::invalid_argument("pilempm::core::solve: b has " + std::to_string(b.size()) +
+                                    " and x " + std::to_string(x.size()) +
+                                    " entries for a matrix of size " + std::to_string(n));
+    if (!all_finite(b) || !all_finite(x))
+        throw std::invalid_argument("pilempm::core::solve: b or the initial x is not finite");
+    if (!(options.relative_tolerance > 0.0) || options.max_iterations < 1 ||
+        options.gmres_restart < 1)
+        throw std::invalid_argument(
+            "pilempm::core::solve: relative_tolerance, max_iterations and gmres_restart must be "
+            "positive");
+
+    SolveReport report;
+    report.method = method_name(options);
+    report.preconditioner = preconditioner_name(options);
+    const std::string what = report.method + " + " + report.preconditioner;
+    const double b_norm = norm2(b);
+    if (b_norm == 0.0) {  // x = 0 exactly
+        std::fill(x.begin(), x.end(), 0.0);
+        report.converged = true;
+        return report;
+    }
+
+    static std::mutex mutex;
+    const std::lock_guard<std::mutex> lock(mutex);
+    initialise_trilinos();
+    const auto start = std::chrono::steady_clock::now();
+    auto ta = guarded(what, "matrix copy", [&] {
+        RCP<const Map> map = rcp(new Map(static_cast<Tpetra::global_size_t>(n), GO{0},
+                                         rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF))));
+        return to_tpetra(a, map);
+    });
+    report.setup_seconds = seconds_since(start);
+
+    report.iterations = options.method == KrylovMethod::direct
+                            ? direct_solve(a, ta, b, x, options, what, report)
+                            : krylov_solve(ta, b, x, options, what, report);
+
+    std::vector<double> ax;
+    a.multiply(x, ax);
+    double r2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) r2 += (b[i] - ax[i]) * (b[i] - ax[i]);
+    report.relative_residual = std::sqrt(r2) / b_norm;
+    report.converged = std::isfinite(report.relative_residual) &&
+                       report.relative_residual <= options.relative_tolerance;
+    return report;
+}
+
+}  // namespace pilempm::core
