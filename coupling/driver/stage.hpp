@@ -1,11 +1,13 @@
 #pragma once
 // The stages of a run and the loads switched per stage. A quasi-static stage relaxes to
 // equilibrium under local damping in pseudo-time (the clock stands still); a dynamic stage
-// runs for its duration in real time. Load times count from the start of the stage, so a
+// runs for its duration in real time; a consolidation stage lets the pore water flow for its
+// duration in real time with the soil at rest (implicit). Load times count from the start of the stage, so a
 // pulse acts at the start of every dynamic stage it is switched on in.
 #include <string>
 #include <vector>
 
+#include "core/linear_algebra/sparse_linear_solver.hpp"
 #include "mpm/solver/mpm_solver.hpp"
 
 namespace pilempm::coupling {
@@ -13,7 +15,14 @@ namespace pilempm::coupling {
 struct StageSpec {
     std::string name = "stage";
     bool quasi_static = false;
-    double duration = 0.0;       // s (dynamic)
+    // A consolidation stage: the implicit u-p solver (mpm/implicit) over `duration` seconds
+    // of real time in `steps` backward-Euler steps growing by `step_growth` each (short
+    // first steps for the steep early gradients of pressure).
+    bool consolidation = false;
+    int steps = 20;
+    double step_growth = 1.2;
+    core::SolverOptions linear_solver;
+    double duration = 0.0;       // s (dynamic, consolidation)
     long max_steps = 100000;     // quasi-static
     double tolerance = 1e-4;     // unbalanced force ratio that ends a quasi-static stage
     double local_damping = 0.0;  // Cundall's alpha

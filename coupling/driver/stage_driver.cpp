@@ -1,6 +1,7 @@
 #include "coupling/driver/stage_driver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace pilempm::coupling {
@@ -110,6 +111,25 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
     return true;
 }
 
+// After a step in real time (dynamic, consolidation): the history row, a snapshot when its
+// clock says, the periodic checkpoint and the stop request. False when stopped.
+template <int D>
+bool StageDriver<D>::after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop) {
+    record();
+    if (settings_.snapshot_interval > 0.0 && solver_.time() >= state_.next_snapshot - 1e-12) {
+        observer_->snapshot(solver_.time(), m_);
+        state_.next_snapshot += settings_.snapshot_interval;
+    }
+    if (periodic_checkpoint_and_stop(stop)) {
+        report.steps = state_.stage_steps;
+        report.stopped = true;
+        observer_->stage_end(state_.stage, st, report);
+        return false;
+    }
+    observer_->stage_progress(st, state_, solver_);
+    return true;
+}
+
 template <int D>
 bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
     const double t_end = state_.stage_start_time + st.duration;
@@ -119,21 +139,34 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
         const double dt = std::min(solver_.stable_time_step(), t_end - solver_.time());
         solver_.step(dt);
         ++state_.stage_steps;
-        record();
-        if (settings_.snapshot_interval > 0.0 && solver_.time() >= state_.next_snapshot - 1e-12) {
-            observer_->snapshot(solver_.time(), m_);
-            state_.next_snapshot += settings_.snapshot_interval;
-        }
-        if (periodic_checkpoint_and_stop(stop)) {
-            report.steps = state_.stage_steps;
-            report.stopped = true;
-            observer_->stage_end(state_.stage, st, report);
-            return false;
-        }
-        observer_->stage_progress(st, state_, solver_);
+        if (!after_real_time_step(st, report, stop)) return false;
     }
     report.steps = state_.stage_steps;
     report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+    observer_->stage_end(state_.stage, st, report);
+    return true;
+}
+
+// Real time with the soil at rest: implicit u-p steps growing geometrically, the last one
+// ending the stage on its duration. Held loads act (a pulse is a dynamic stage's).
+template <int D>
+bool StageDriver<D>::run_consolidation(const StageSpec& st, const StopRequest* stop) {
+    mpm::ConsolidationSolver<D> consolidation(m_, st.linear_solver);
+    const double r = st.step_growth;
+    const double first = r == 1.0 ? st.duration / st.steps : st.duration * (r - 1.0) / (std::pow(r, st.steps) - 1.0);
+    const double t_end = state_.stage_start_time + st.duration;
+    StageReport report;
+    for (long n = state_.stage_steps; n < st.steps; ++n) {
+        apply_loads(true, solver_.time() - state_.stage_start_time);
+        const double dt = n + 1 == st.steps ? t_end - solver_.time() : first * std::pow(r, static_cast<double>(n));
+        const mpm::ConsolidationStepReport step = consolidation.step(dt);
+        last_consolidation_ = step;
+        solver_.set_time(solver_.time() + dt, solver_.steps() + 1);
+        solver_.set_unbalanced_force_ratio(step.unbalanced_ratio);
+        state_.stage_steps = n + 1;
+        if (!after_real_time_step(st, report, stop)) return false;
+    }
+    report.steps = state_.stage_steps;
     observer_->stage_end(state_.stage, st, report);
     return true;
 }
@@ -153,7 +186,9 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
         }
         observer_->stage_begin(state_.stage, st);
         m_.local_damping = st.local_damping;
-        const bool finished = st.quasi_static ? run_quasi_static(st, stop) : run_dynamic(st, stop);
+        const bool finished = st.consolidation  ? run_consolidation(st, stop)
+                              : st.quasi_static ? run_quasi_static(st, stop)
+                                                : run_dynamic(st, stop);
         if (!finished) return Outcome::Stopped;
         observer_->snapshot(solver_.time(), m_);
         // The checkpoint at a stage's end names the next stage, not yet begun.

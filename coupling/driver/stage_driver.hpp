@@ -12,6 +12,7 @@
 #include "coupling/driver/recorders.hpp"
 #include "coupling/driver/stage.hpp"
 #include "coupling/driver/stop_request.hpp"
+#include "mpm/implicit/consolidation.hpp"
 #include "mpm/solver/mpm_solver.hpp"
 
 namespace pilempm::coupling {
@@ -75,6 +76,8 @@ public:
     const DriverState& state() const { return state_; }
     const mpm::MpmSolver<D>& solver() const { return solver_; }
     const std::vector<StageSpec>& stages() const { return stages_; }
+    // The last consolidation step's linear solve (unknowns, iterations, residual), for logs.
+    const mpm::ConsolidationStepReport& last_consolidation() const { return last_consolidation_; }
 
 private:
     void apply_loads(bool quasi_static, double time_in_stage);
@@ -83,6 +86,8 @@ private:
     bool periodic_checkpoint_and_stop(const StopRequest* stop);
     bool run_quasi_static(const StageSpec& st, const StopRequest* stop);
     bool run_dynamic(const StageSpec& st, const StopRequest* stop);
+    bool run_consolidation(const StageSpec& st, const StopRequest* stop);
+    bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop);
 
     mpm::MpmModel<D>& m_;
     mpm::MpmSolver<D> solver_;
@@ -94,6 +99,7 @@ private:
     std::vector<std::unique_ptr<Recorder<D>>> recorders_;
     Table history_;
     DriverState state_;
+    mpm::ConsolidationStepReport last_consolidation_;
     double flip_dynamic_;  // the model's velocity transfer, restored after quasi-static stages
     bool apic_dynamic_;
 };

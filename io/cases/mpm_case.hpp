@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/linear_algebra/sparse_linear_solver.hpp"
 #include "io/cases/material_input.hpp"
 #include "io/cases/pile_hammer_input.hpp"
 #include "mpm/setup/model_setup.hpp"
@@ -61,6 +62,10 @@ struct MpmVelocityInput {  // grid nodes in a box move at a prescribed velocity
 struct MpmStageInput {
     std::string name;
     bool quasi_static = false;      // local damping until equilibrium
+    bool consolidation = false;     // implicit u-p: the pore water flows, the soil at rest
+    int steps = 20;                 // consolidation: backward-Euler steps
+    double step_growth = 1.2;       // consolidation: each step this much longer than the last
+    core::SolverOptions linear_solver;
     double duration = 0.0;          // s (dynamic)
     long max_steps = 100000;        // quasi-static
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)

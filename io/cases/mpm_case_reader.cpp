@@ -96,8 +96,34 @@ MpmRegionInput read_region(MapReader m, const MpmCase& c) {
 MpmStageInput read_stage(MapReader m) {
     MpmStageInput s;
     s.name = m.text_or("name", "stage");
-    s.quasi_static = m.choice("type", {"quasi_static", "dynamic"}) == "quasi_static";
-    if (s.quasi_static) {
+    const std::string type = m.choice("type", {"quasi_static", "dynamic", "consolidation"});
+    s.quasi_static = type == "quasi_static";
+    s.consolidation = type == "consolidation";
+    if (s.consolidation) {
+        s.duration = m.number("duration", positive("duration in s"));
+        s.steps = m.integer_or("steps", 20, 1);
+        s.step_growth = m.number_or("step_growth", 1.2, {"a growth factor from 1 to 2 of one step over the last",
+                                                          [](double x) { return x >= 1.0 && x <= 2.0; }});
+        if (auto ls = m.optional_map("linear_solver")) {
+            const std::string method = ls->choice_or("method", "gmres", {"gmres", "bicgstab", "direct"});
+            s.linear_solver.method = method == "gmres"      ? core::KrylovMethod::gmres
+                                     : method == "bicgstab" ? core::KrylovMethod::bicgstab
+                                                            : core::KrylovMethod::direct;
+            const std::string pre = ls->choice_or("preconditioner", "ilu", {"none", "jacobi", "ilu", "ilut", "multigrid"});
+            s.linear_solver.preconditioner = pre == "none"     ? core::Preconditioner::none
+                                             : pre == "jacobi" ? core::Preconditioner::jacobi
+                                             : pre == "ilu"    ? core::Preconditioner::ilu
+                                             : pre == "ilut"   ? core::Preconditioner::ilut
+                                                               : core::Preconditioner::multigrid;
+            s.linear_solver.ilu_level = ls->integer_or("ilu_level", 1, 0);
+            s.linear_solver.relative_tolerance = ls->number_or("tolerance", 1e-10, in_open_range(0.0, 1.0, "a relative residual"));
+            s.linear_solver.multigrid_symmetric = false;
+            ls->finish();
+        } else {
+            s.linear_solver.ilu_level = 1;
+            s.linear_solver.relative_tolerance = 1e-10;
+        }
+    } else if (s.quasi_static) {
         s.max_steps = m.integer_or("max_steps", 100000, 1);
         s.tolerance = m.number_or("tolerance", 1e-4, positive("unbalanced force ratio"));
         s.local_damping = m.number_or("local_damping", 0.7, in_open_range(0.0, 1.0, "a damping coefficient"));

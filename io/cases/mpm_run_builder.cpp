@@ -212,6 +212,10 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         s.max_steps = st.max_steps;
         s.tolerance = st.tolerance;
         s.local_damping = st.local_damping;
+        s.consolidation = st.consolidation;
+        s.steps = st.steps;
+        s.step_growth = st.step_growth;
+        s.linear_solver = st.linear_solver;
         run.stages.push_back(s);
     }
     run.settings.snapshot_interval = c.snapshot_interval;

@@ -39,6 +39,14 @@ public:
     }
 };
 
+// The index of a model's state named "void_ratio" (-1: it keeps none). A saturated point's
+// porosity is the one owner of its void ratio: the solvers set this state from it each step.
+inline int void_ratio_state(const ConstitutiveModel& m) {
+    for (int k = 0; k < m.num_state(); ++k)
+        if (std::string(m.state_name(k)) == "void_ratio") return k;
+    return -1;
+}
+
 // Isotropic linear elasticity.
 class LinearElastic final : public ConstitutiveModel {
 public:

@@ -43,6 +43,7 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
         if (dr.drainage == Drainage::Coupled && !(dr.darcy_resistance > 0.0))
             throw std::invalid_argument("a coupled material needs a permeability");
     }
+    for (const auto& mat : m_.materials) void_ratio_state_.push_back(void_ratio_state(*mat));
     if (coupled_ && !m_.grid.water)
         throw std::invalid_argument("coupled (v-w) materials need a grid with water fields (Grid::water)");
     if (m_.grid.water && m_.particles.field.size() > 0)
@@ -529,7 +530,7 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
             const Drainage dr = drainage_[p.material[i]].drainage;
             const double water = p.porosity[i] * rho_w * p.volume[i];
             const double inertia = dr == Drainage::Dry || dr == Drainage::Coupled ? p.mass[i] : p.mass[i] + water;
-            const double water_mass = dr == Drainage::Coupled ? rho_w * p.volume[i] : 0.0;
+            const double water_mass = dr == Drainage::Coupled ? water : 0.0;
             for (int k = 0; k < s.count; ++k) {
                 double vn[D];
                 velocity_toward_node(s, k, &p.v[D * i], C, vn);
@@ -551,8 +552,10 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
                 // A water field at a drained boundary is free; at any other it is held with the solid.
                 const bool water_entry = g.water && f % 2 == 1;
                 const bool held = cond && cond->fixed[d] && !(water_entry && cond->drained);
-                g.velocity[k] = held ? cond->prescribed[d]
-                                     : (g.mass[nodef] > tiny ? scratch_[k] / g.mass[nodef] : 0.0);
+                // The water's momentum came with its own mass (the water inertia), not the
+                // water equation's.
+                const double inertia = water_entry ? g.water_inertia[nodef - 1] : g.mass[nodef];
+                g.velocity[k] = held ? cond->prescribed[d] : (g.mass[nodef] > tiny ? scratch_[k] / inertia : 0.0);
             }
             // The remapped velocities may not enter a wall either (friction was applied above).
             if (cond && cond->wall >= 0) {

@@ -98,6 +98,8 @@ public:
     double total_mass() const;
     // ||unbalanced force|| / ||external force|| over the grid nodes of the last step.
     double unbalanced_force_ratio() const { return unbalanced_ratio_; }
+    // An implicit stage's own measure of it (the explicit steps compute theirs).
+    void set_unbalanced_force_ratio(double ratio) { unbalanced_ratio_ = ratio; }
     // Work done on the grid by the absorbing dashpots so far (energy leaving), J.
     double absorbed_energy() const { return absorbed_; }
     // Work done on the grid by the external forces (gravity, surface loads) so far, J.
@@ -148,6 +150,7 @@ private:
     bool coupled_ = false;    // ... with its own velocity field (v-w)
     std::vector<MaterialDrainage> drainage_;  // per material (dry when the model gives none)
     std::vector<double> volume_before_;       // per point: volume before this step's update
+    std::vector<int> void_ratio_state_;       // per material: its state "void_ratio" (-1: none), set from the porosity
     std::vector<Stencil<D>> stencil_;
     std::vector<std::vector<int>> points_of_material_;
     std::vector<int> tensor_states_;  // per material: symmetric tensors rotated with the stress

@@ -16,7 +16,9 @@ namespace pilempm::mpm {
 
 // Per grid entry (V values): mass, momentum (D), force (D), coupling term, external force
 // (D). The coupling term is the water's inertia in the mixture's momentum on solid entries
-// and the Darcy drag on water entries.
+// and the Darcy drag on water entries. A water entry's mass is the water equation's,
+// sum N rho_w V; its momentum is the water's, sum N n rho_w V w, so that the mixture's
+// momentum passes between points and grid exactly whatever the porosity.
 template <int D>
 void MpmSolver<D>::scatter_saturated() {
     auto& p = m_.particles;
@@ -74,7 +76,7 @@ void MpmSolver<D>::scatter_saturated() {
             double* bw = b + V;  // the water field beside the solid one
             bw[0] += N * water_density_mass;
             for (int d = 0; d < D; ++d) {
-                bw[1 + d] += N * water_density_mass * w[d];
+                bw[1 + d] += N * water_mass * w[d];  // the water's momentum: w = this / the water inertia
                 bw[1 + D + d] += N * body_w[d] + vol * pe * s.e[k].dN[d];
                 bw[2 + 2 * D + d] += N * body_w[d];
             }
@@ -125,7 +127,7 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
             const double porosity = has_water ? Mnw / Mw : 0.0;
             for (int d = 0; d < D; ++d) {
                 const int ks = D * es + d, kw = D * ew + d;
-                const double v0 = g.momentum[ks] / Ms, w0 = has_water ? g.momentum[kw] / Mw : 0.0;
+                const double v0 = g.momentum[ks] / Ms, w0 = has_water ? g.momentum[kw] / Mnw : 0.0;
                 double Fs = g.force[ks], Fw = has_water ? g.force[kw] : 0.0;
                 const double cs = cond ? cond->dashpot[d] : 0.0, cw = cond && has_water ? cond->water_dashpot[d] : 0.0;
                 const bool fixed_s = cond && cond->fixed[d];
@@ -231,6 +233,9 @@ void MpmSolver<D>::update_pore_water(double dt) {
             }
             p.pore_pressure[i] -= Kw / n * ((1.0 - n) * solid_volumetric + n * div_w * dt);
         }
+        // The porosity is the point's: a model's void ratio starts each step from it.
+        const int e_at = void_ratio_state_[p.material[i]];
+        if (e_at >= 0) p.state[static_cast<std::size_t>(p.state_stride) * i + e_at] = n / (1.0 - n);
         // (1 - n) V is the grains' volume: it does not change.
         p.porosity[i] = 1.0 - (1.0 - n) * volume_before_[i] / p.volume[i];
     }

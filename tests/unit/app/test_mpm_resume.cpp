@@ -1,8 +1,9 @@
 // An MPM run interrupted by a real signal and resumed from its checkpoint writes exactly
 // what the same run left alone writes: history.csv, verification.json, summary.json (less
 // its wall time) and the VTK series (every .vtu and the .pvd), byte for byte. Checked for
-// a dynamic stage (the 1D wave, FLIP and APIC) and for a run stopped in its quasi-static
-// stage that goes on to a dynamic one.
+// a dynamic stage (the 1D wave, FLIP and APIC), for a run stopped in its quasi-static
+// stage that goes on to a dynamic one, and for saturated soil stopped in a consolidation
+// pause and in the blow after it.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -123,7 +124,55 @@ verification:
   checks: [absorbed_energy]
 )";
 
+// Saturated soil under 5 m of water (coupled v-w), struck twice with an implicit
+// consolidation pause between the blows: the checkpoint carries the pore water.
+const char* kBlowPauseBlow = R"(title: "blow, pause, blow in saturated soil"
+analysis: mpm
+dimension: 2
+grid: {origin: [0.0, 0.0], size: [0.25, 5.0], cells: [1, 20]}
+water: {level: 9.0}
+materials:
+  - {name: sand, model: linear_elastic, density: 2000.0, youngs_modulus: 20.0e6, poisson_ratio: 0.3,
+     drainage: coupled, porosity: 0.4, hydraulic_conductivity: 1.0e-4}
+regions:
+  - {material: sand, box: {min: [0.0, 0.0], max: [0.25, 4.0]}}
+boundaries:
+  - {plane: x_min, type: roller}
+  - {plane: x_max, type: roller}
+  - {plane: y_min, type: absorbing}
+initial_stress: {type: k0, surface: 4.0}
+pressures:
+  - {box: {min: [0.0, 3.9], max: [0.25, 4.0]}, face: y_max, pressure: 20.0e3, duration: 0.005, stages: [blow 1, blow 2]}
+stages:
+  - {name: blow 1, type: dynamic, duration: 0.02}
+  - {name: pause, type: consolidation, duration: 1.25, steps: 12}
+  - {name: blow 2, type: dynamic, duration: 0.02}
+output:
+  plots: false
+  snapshot_interval: 0.01
+  probes: [[0.0625, 3.0625], [0.0625, 1.0625]]
+verification:
+  checks: [absorbed_energy]
+  absorbed_share: 0.0
+)";
+
 }  // namespace
+
+TEST(MpmResume, SaturatedRunStoppedInItsConsolidationPauseResumedWritesWhatAnUninterruptedOneWrites) {
+    const fs::path dir = fresh_dir("pause");
+    const fs::path file = dir / "blow-pause-blow.yaml";
+    std::ofstream(file) << kBlowPauseBlow;
+    check_resume(dir, file.string(), SIGINT, 303);  // blow 1 takes 297 steps, the pause 12
+    fs::remove_all(dir);
+}
+
+TEST(MpmResume, SaturatedRunStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneWrites) {
+    const fs::path dir = fresh_dir("second-blow");
+    const fs::path file = dir / "blow-pause-blow.yaml";
+    std::ofstream(file) << kBlowPauseBlow;
+    check_resume(dir, file.string(), SIGTERM, 450);
+    fs::remove_all(dir);
+}
 
 TEST(MpmResume, InterruptedDynamicRunResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("flip");
