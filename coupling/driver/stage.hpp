@@ -22,6 +22,7 @@ struct StageSpec {
     int steps = 20;
     double step_growth = 1.2;
     core::SolverOptions linear_solver;
+    int direct_below = 0;  // unknowns below which the step's system is factorised instead (0: never)
     double duration = 0.0;       // s (dynamic, consolidation)
     long max_steps = 100000;     // quasi-static
     double tolerance = 1e-4;     // unbalanced force ratio that ends a quasi-static stage

@@ -151,7 +151,7 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
 // ending the stage on its duration. Held loads act (a pulse is a dynamic stage's).
 template <int D>
 bool StageDriver<D>::run_consolidation(const StageSpec& st, const StopRequest* stop) {
-    mpm::ConsolidationSolver<D> consolidation(m_, st.linear_solver);
+    mpm::ConsolidationSolver<D> consolidation(m_, st.linear_solver, st.direct_below);
     const double r = st.step_growth;
     const double first = r == 1.0 ? st.duration / st.steps : st.duration * (r - 1.0) / (std::pow(r, st.steps) - 1.0);
     const double t_end = state_.stage_start_time + st.duration;

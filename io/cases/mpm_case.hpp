@@ -66,6 +66,7 @@ struct MpmStageInput {
     int steps = 20;                 // consolidation: backward-Euler steps
     double step_growth = 1.2;       // consolidation: each step this much longer than the last
     core::SolverOptions linear_solver;
+    int direct_below = 0;           // consolidation: factorise (KLU2) below this many unknowns (0: never)
     double duration = 0.0;          // s (dynamic)
     long max_steps = 100000;        // quasi-static
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)

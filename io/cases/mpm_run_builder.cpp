@@ -216,6 +216,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         s.steps = st.steps;
         s.step_growth = st.step_growth;
         s.linear_solver = st.linear_solver;
+        s.direct_below = st.direct_below;
         run.stages.push_back(s);
     }
     run.settings.snapshot_interval = c.snapshot_interval;

@@ -33,8 +33,8 @@ void strain_matrix(const Stencil<D>& s, int k, bool axisymmetric, double B[6][D]
 }  // namespace
 
 template <int D>
-ConsolidationSolver<D>::ConsolidationSolver(MpmModel<D>& model, core::SolverOptions options)
-    : m_(model), options_(options) {
+ConsolidationSolver<D>::ConsolidationSolver(MpmModel<D>& model, core::SolverOptions options, int direct_below)
+    : m_(model), options_(options), direct_below_(direct_below) {
     points_of_material_.assign(m_.materials.size(), {});
     for (std::size_t i = 0; i < m_.particles.size(); ++i) points_of_material_[m_.particles.material[i]].push_back(static_cast<int>(i));
     for (const auto& mat : m_.materials) void_ratio_state_.push_back(void_ratio_state(*mat));
@@ -72,9 +72,27 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
                 nodes.push_back(node);
             }
         }
-    const int N = static_cast<int>(nodes.size()), n_u = D * N, n_dof = n_u + N;
-    auto u_dof = [&](int node, int d) { return D * node_index[node] + d; };
-    auto p_dof = [&](int node) { return n_u + node_index[node]; };
+    // Nodes in the grid's global order (x fastest): neighbours are numbered close together,
+    // so the matrix stays banded (about a row of nodes wide) for the factorisation.
+    std::vector<long> global(nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k) global[k] = g.node(g.stored_ijk(nodes[k]));
+    std::vector<int> order(nodes.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return global[a] < global[b]; });
+    {
+        std::vector<int> sorted(nodes.size());
+        for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = nodes[order[k]];
+        nodes.swap(sorted);
+        for (std::size_t k = 0; k < nodes.size(); ++k) node_index[nodes[k]] = static_cast<int>(k);
+    }
+    // Unknowns node by node, (u_1 .. u_D, p): each pressure beside its node's displacements,
+    // which keeps the factorisation's pivots on the diagonal and its fill low.
+    const int N = static_cast<int>(nodes.size()), n_dof = (D + 1) * N;
+    auto u_of = [](int k, int d) { return (D + 1) * k + d; };
+    auto p_of = [](int k) { return (D + 1) * k + D; };
+    auto is_pressure = [](int dof) { return dof % (D + 1) == D; };
+    auto u_dof = [&](int node, int d) { return u_of(node_index[node], d); };
+    auto p_dof = [&](int node) { return p_of(node_index[node]); };
     // Pressure unknowns in units of a modulus, p = alpha p~, and the mass rows times alpha:
     // the four blocks are then of one size.
     double alpha = 0.0;
@@ -82,7 +100,7 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
     const double Kw = m_.water.bulk_modulus;
 
     std::vector<core::Triplet> triplets;
-    std::vector<double> rhs(n_dof, 0.0), external(n_u, 0.0), filled(N, 0.0), projected(N, 0.0), weight(N, 0.0), storage(N, 0.0);
+    std::vector<double> rhs(n_dof, 0.0), external(n_dof, 0.0), filled(N, 0.0), projected(N, 0.0), weight(N, 0.0), storage(N, 0.0);
     std::vector<unsigned char> has_water(N, 0);
     std::vector<core::Triplet> flow;  // H, unscaled, to form -dt H p_n
     triplets.reserve(static_cast<std::size_t>(n_points) * (D == 2 ? 9 * 9 * 9 : 27 * 27 * 16));
@@ -180,10 +198,10 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
         if (weight[k] > 0.0) p_node[k] = projected[k] / weight[k];
     for (const auto& t : flow) {
         triplets.push_back({t.row, t.col, alpha * alpha * dt * t.value});
-        rhs[t.row] -= alpha * dt * t.value * p_node[t.col - n_u];
+        rhs[t.row] -= alpha * dt * t.value * p_node[t.col / (D + 1)];
     }
     for (int k = 0; k < N; ++k)
-        if (has_water[k]) triplets.push_back({n_u + k, n_u + k, alpha * alpha * storage[k]});
+        if (has_water[k]) triplets.push_back({p_of(k), p_of(k), alpha * alpha * storage[k]});
     // Prescribed unknowns: supports (du = v dt), drained faces and the soil's free surface
     // (p = 0), pressures where no coupled point reaches (dp = 0).
     std::vector<double> fixed_value(n_dof, 0.0);
@@ -196,13 +214,9 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
             for (int d = 0; d < D; ++d)
                 // Walls hold the normal; an absorbing boundary's far field is at rest in a pause.
                 if (cond->fixed[d] || (cond->wall >= 0 && cond->wall / 2 == d) || cond->dashpot[d] > 0.0) {
-                    fixed[D * k + d] = 1;
-                    fixed_value[D * k + d] = cond->fixed[d] ? cond->prescribed[d] * dt : 0.0;
+                    fixed[u_of(k, d)] = 1;
+                    fixed_value[u_of(k, d)] = cond->fixed[d] ? cond->prescribed[d] * dt : 0.0;
                 }
-        if (!has_water[k]) {
-            fixed[n_u + k] = 1;
-            continue;
-        }
         // The node's volume inside the grid, and how much of it the soil fills: a node at the
         // soil's free surface has about half of it filled.
         const auto ijk = g.stored_ijk(node);
@@ -215,19 +229,28 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
             const double r = g.coordinate(0, ijk[0]);
             tributary *= ijk[0] == 0 ? 0.25 * g.spacing[0] : r;
         }
+        // A node the soil barely reaches (a point's domain just over a cell face) would give a
+        // row of almost no stiffness, which the factorisation pivots away from at great cost:
+        // it is held (its displacement moves the points by less than this share).
+        if (filled[k] < 1e-3 * tributary)
+            for (int d = 0; d < D; ++d) fixed[u_of(k, d)] = 1, fixed_value[u_of(k, d)] = 0.0;
+        if (!has_water[k]) {
+            fixed[p_of(k)] = 1;
+            continue;
+        }
         const bool surface = filled[k] < 0.75 * tributary;
         if (surface || (cond && cond->drained)) {
-            fixed[n_u + k] = 1;
-            fixed_value[n_u + k] = -p_node[k] / alpha;  // p = 0 after the step
+            fixed[p_of(k)] = 1;
+            fixed_value[p_of(k)] = -p_node[k] / alpha;  // p = 0 after the step
         }
     }
     // The state's out-of-balance force over the external force, on the free displacements.
     double unbalanced = 0.0, applied = 0.0;
-    for (int k = 0; k < n_u; ++k)
-        if (!fixed[k]) unbalanced += rhs[k] * rhs[k], applied += external[k] * external[k];
+    for (int k = 0; k < n_dof; ++k)
+        if (!is_pressure(k) && !fixed[k]) unbalanced += rhs[k] * rhs[k], applied += external[k] * external[k];
     const double unbalanced_ratio = applied > 0.0 ? std::sqrt(unbalanced / applied) : 0.0;
     bool supported = false;
-    for (int k = 0; k < n_u; ++k) supported = supported || fixed[k];
+    for (int k = 0; k < n_dof; ++k) supported = supported || (!is_pressure(k) && fixed[k]);
     if (!supported)
         throw std::runtime_error("consolidation needs the soil supported: no grid node its points reach has a "
                                  "prescribed displacement (add fixed or roller boundaries)");
@@ -252,8 +275,10 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
     ConsolidationStepReport report;
     report.unknowns = n_dof;
     report.unbalanced_ratio = unbalanced_ratio;
-    report.solve = core::solve(A, rhs, x, options_);
-    if (!report.solve.converged) {
+    core::SolverOptions options = options_;
+    if (n_dof < direct_below_) options.method = core::KrylovMethod::direct;
+    report.solve = core::solve(A, rhs, x, options);
+    if (!report.solve.converged && options.method != core::KrylovMethod::direct) {
         core::SolverOptions direct = options_;
         direct.method = core::KrylovMethod::direct;
         x.assign(n_dof, 0.0);
@@ -263,7 +288,7 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
                                      std::to_string(report.solve.relative_residual) + " with " + report.solve.method +
                                      "); is the soil held in every direction (fixed, roller or absorbing boundaries)?");
     }
-    for (int k = n_u; k < n_dof; ++k) x[k] *= alpha;
+    for (int k = 0; k < N; ++k) x[p_of(k)] *= alpha;
     // The points take the increments: strain and stress, position, pore pressure, porosity.
     for (long i = 0; i < n_points; ++i) {
         const Stencil<D>& s = stencil_[i];

@@ -30,7 +30,9 @@ struct ConsolidationStepReport {
 template <int D>
 class ConsolidationSolver {
 public:
-    explicit ConsolidationSolver(MpmModel<D>& model, core::SolverOptions options = {});
+    // direct_below: systems with fewer unknowns are factorised (KLU2), larger ones solved by
+    // `options` (0: always `options`; KLU2 is the fallback when they fail).
+    explicit ConsolidationSolver(MpmModel<D>& model, core::SolverOptions options = {}, int direct_below = 0);
     // One backward-Euler step of dt seconds. Throws std::runtime_error when the linear
     // solve does not converge (naming the method and the residual).
     ConsolidationStepReport step(double dt);
@@ -38,6 +40,7 @@ public:
 private:
     MpmModel<D>& m_;
     core::SolverOptions options_;
+    int direct_below_ = 0;
     std::vector<Stencil<D>> stencil_;
     std::vector<std::vector<int>> points_of_material_;
     std::vector<int> void_ratio_state_;  // per material (-1: none)

@@ -1,5 +1,6 @@
 // MPM throughput in particle-steps per second: 2D linear-elastic uGIMP (FLIP and APIC), 2D Mohr-Coulomb
-// CPDI and 3D linear-elastic uGIMP, on 1 and 2 threads (the argument).
+// CPDI and 3D linear-elastic uGIMP, on 1 and 2 threads (the argument); the 2D uGIMP block
+// saturated (coupled v-w and undrained) beside its dry self.
 // Run: build/tests/pilempm_benchmarks --benchmark_filter=Mpm
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -16,8 +17,13 @@ namespace {
 // `spread` > 1 the grid is that many times wider (each horizontal axis) and taller than the
 // soil: a body in a mostly empty box, as a pile-driving domain's far field or a collapse.
 template <int D>
-MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb, int spread = 1) {
+MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb, int spread = 1,
+                  Drainage drainage = Drainage::Dry) {
     MpmModel<D> m;
+    if (drainage == Drainage::Coupled) {
+        m.grid.water = true;
+        m.grid.fields = 2;
+    }
     for (int d = 0; d < D; ++d) {
         m.grid.origin[d] = 0.0;
         m.grid.spacing[d] = 0.25;
@@ -35,7 +41,14 @@ MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb, int spre
         for (int d = 0; d < D - 1; ++d)
             if (x[d] > width) return false;
         return x[D - 1] < top;
-    }, 2, 2000.0, 0, false);
+    }, 2, drainage == Drainage::Dry ? 2000.0 : 1600.0, 0, false);
+    if (drainage != Drainage::Dry) {
+        // Saturated (rho_sat 2000 kg/m^3, n = 0.4, k = 1e-4 m/s) under a water surface above it.
+        m.drainage.push_back({drainage, 0.4, 1000.0 * 9.80665 / 1e-4});
+        m.water.free_surface = true;
+        m.water.level = top + 10.0;
+        for (auto& n : m.particles.porosity) n = 0.4;
+    }
     apply_boundary<D>(m.grid, D - 1, 0, BoundaryKind::Fixed);
     for (int d = 0; d < D - 1; ++d) {
         apply_boundary<D>(m.grid, d, 0, BoundaryKind::Roller);
@@ -45,9 +58,10 @@ MpmModel<D> block(int cells_across, ShapeKind shape, bool mohr_coulomb, int spre
 }
 
 template <int D>
-void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells, bool apic = false, int spread = 1) {
+void run(benchmark::State& state, ShapeKind shape, bool mohr_coulomb, int cells, bool apic = false, int spread = 1,
+         Drainage drainage = Drainage::Dry) {
     omp_set_num_threads(static_cast<int>(state.range(0)));
-    MpmModel<D> m = block<D>(cells, shape, mohr_coulomb, spread);
+    MpmModel<D> m = block<D>(cells, shape, mohr_coulomb, spread, drainage);
     m.apic = apic;
     MpmSolver<D> solver(m);
     const double dt = solver.stable_time_step();
@@ -66,6 +80,11 @@ void BM_Mpm3dElasticGimp(benchmark::State& s) { run<3>(s, ShapeKind::GIMP, false
 // The same bodies in boxes 4 x 4 (2D) and 3 x 3 x 3 (3D) times their size.
 void BM_Mpm2dElasticGimpSparse(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100, false, 4); }
 void BM_Mpm3dElasticGimpSparse(benchmark::State& s) { run<3>(s, ShapeKind::GIMP, false, 20, false, 3); }
+// Saturated: the v-w step (two velocity fields, the drag solved per node) and the undrained one.
+void BM_Mpm2dElasticGimpCoupled(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100, false, 1, Drainage::Coupled); }
+void BM_Mpm2dElasticGimpUndrained(benchmark::State& s) { run<2>(s, ShapeKind::GIMP, false, 100, false, 1, Drainage::Undrained); }
+BENCHMARK(BM_Mpm2dElasticGimpCoupled)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Mpm2dElasticGimpUndrained)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm2dElasticGimp)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm2dElasticGimpApic)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Mpm2dMohrCoulombCpdi)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);

@@ -1,0 +1,99 @@
+// Pore-water keys of MPM cases: what a saturated material needs is required, what it
+// cannot have is refused, each error naming the key; a valid case builds the water fields,
+// the grains' mass and the Darcy resistance its permeability gives.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/cases/mpm_case.hpp"
+#include "io/cases/mpm_run_builder.hpp"
+#include "io/yaml/case_error.hpp"
+
+namespace fs = std::filesystem;
+namespace pio = pilempm::io;
+
+namespace {
+
+std::string terzaghi() {
+    std::ifstream in(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/terzaghi-explicit.yaml");
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+fs::path write(const std::string& text, const std::string& name) {
+    const fs::path file = fs::temp_directory_path() / ("pilempm-pore-" + name + "-" + std::to_string(::getpid()) + ".yaml");
+    std::ofstream(file) << text;
+    return file;
+}
+
+// The message of the CaseError reading `text` throws ("" if none).
+std::string error_of(const std::string& text, const std::string& name) {
+    const fs::path file = write(text, name);
+    std::string message;
+    try {
+        (void)pio::read_mpm_case(file.string());
+    } catch (const pio::CaseError& e) {
+        message = e.what();
+    }
+    fs::remove(file);
+    return message;
+}
+
+const char* kPermeability = "drainage: coupled, porosity: 0.4, hydraulic_conductivity: 1.0e-3";
+
+TEST(PoreWaterInput, SaturatedMaterialNeedsAPorosity) {
+    const auto msg = error_of(replaced(terzaghi(), kPermeability, "drainage: coupled, hydraulic_conductivity: 1.0e-3"), "n");
+    EXPECT_NE(msg.find("materials[0].porosity"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("porosity of a saturated material"), std::string::npos) << msg;
+}
+
+TEST(PoreWaterInput, CoupledMaterialNeedsExactlyOnePermeability) {
+    const auto none = error_of(replaced(terzaghi(), kPermeability, "drainage: coupled, porosity: 0.4"), "k0");
+    EXPECT_NE(none.find("hydraulic_conductivity"), std::string::npos) << none;
+    EXPECT_NE(none.find("both or neither"), std::string::npos) << none;
+    const auto both = error_of(replaced(terzaghi(), kPermeability, std::string(kPermeability) + ", intrinsic_permeability: 1.0e-10"), "k2");
+    EXPECT_NE(both.find("both or neither"), std::string::npos) << both;
+}
+
+TEST(PoreWaterInput, DryOrUndrainedMaterialRefusesWhatItCannotUse) {
+    const auto dry = error_of(replaced(terzaghi(), kPermeability, "porosity: 0.4"), "dry");
+    EXPECT_NE(dry.find("materials[0].porosity"), std::string::npos) << dry;
+    EXPECT_NE(dry.find("dry material"), std::string::npos) << dry;
+    const auto undrained = error_of(replaced(terzaghi(), kPermeability, "drainage: undrained, porosity: 0.4, hydraulic_conductivity: 1.0e-3"), "u");
+    EXPECT_NE(undrained.find("unless drainage: coupled"), std::string::npos) << undrained;
+    const auto porosity = error_of(replaced(terzaghi(), "porosity: 0.4", "porosity: 1.2"), "n1");
+    EXPECT_NE(porosity.find("between 0 and 1"), std::string::npos) << porosity;
+    const auto stage = error_of(replaced(terzaghi(), "type: dynamic, duration: 1.0", "type: consolidation, duration: 1.0, step_growth: 3.0"), "g");
+    EXPECT_NE(stage.find("step_growth"), std::string::npos) << stage;
+}
+
+TEST(PoreWaterInput, ValidCaseBuildsWaterFieldsGrainMassAndDarcyResistance) {
+    const fs::path file = write(terzaghi(), "ok");
+    const auto c = pio::read_mpm_case(file.string());
+    fs::remove(file);
+    auto run = pio::build_mpm_run<2>(c);
+    const auto& m = run.model;
+    EXPECT_TRUE(m.grid.water);
+    EXPECT_EQ(m.grid.fields, 2);
+    ASSERT_EQ(m.drainage.size(), 1u);
+    // k = rho_w g / (mu / kappa) with standard gravity.
+    EXPECT_NEAR(1000.0 * 9.80665 / m.drainage[0].darcy_resistance, 1e-3, 1e-15);
+    const auto& p = m.particles;
+    ASSERT_GT(p.size(), 0u);
+    // Grains' mass (rho_sat - n rho_w) V, the porosity on every point.
+    EXPECT_NEAR(p.mass[0] / p.volume[0], 2000.0 - 0.4 * 1000.0, 1e-9);
+    for (double n : p.porosity) EXPECT_DOUBLE_EQ(n, 0.4);
+}
+
+}  // namespace
