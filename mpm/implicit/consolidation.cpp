@@ -34,7 +34,7 @@ void strain_matrix(const Stencil<D>& s, int k, bool axisymmetric, double B[6][D]
 
 template <int D>
 ConsolidationSolver<D>::ConsolidationSolver(MpmModel<D>& model, core::SolverOptions options, int direct_below)
-    : m_(model), options_(options), direct_below_(direct_below) {
+    : m_(model), activator_(model), options_(options), direct_below_(direct_below) {
     points_of_material_.assign(m_.materials.size(), {});
     for (std::size_t i = 0; i < m_.particles.size(); ++i) points_of_material_[m_.particles.material[i]].push_back(static_cast<int>(i));
     for (const auto& mat : m_.materials) void_ratio_state_.push_back(void_ratio_state(*mat));
@@ -49,10 +49,7 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
     const long n_points = static_cast<long>(p.size());
     // The blocks the points reach, and their stencils (the same shape functions as the
     // explicit steps).
-    {
-        MpmSolver<D> activator(m_);
-        activator.activate_grid();
-    }
+    activator_.activate_grid();
     stencil_.resize(p.size());
     for (long i = 0; i < n_points; ++i) {
         double half[D * D];

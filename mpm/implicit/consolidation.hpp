@@ -39,6 +39,7 @@ public:
 
 private:
     MpmModel<D>& m_;
+    MpmSolver<D> activator_;  // stores the grid blocks the points reach, as the explicit steps do
     core::SolverOptions options_;
     int direct_below_ = 0;
     std::vector<Stencil<D>> stencil_;

@@ -39,6 +39,7 @@ pilempm_case_test(verify_mpm_k0_hardening_soil_small cases/verification/mpm-k0-h
 # absorbing boundaries for both phases, hydrostatic equilibrium under 40 m of water, Skempton's B.
 pilempm_case_test(verify_terzaghi_explicit cases/verification/terzaghi-explicit.yaml verification)
 pilempm_case_test(verify_terzaghi_implicit cases/verification/terzaghi-implicit.yaml verification)
+pilempm_case_test(verify_terzaghi_double_drainage_implicit cases/verification/terzaghi-double-drainage-implicit.yaml verification)
 pilempm_case_test(verify_saturated_wave_undrained cases/verification/saturated-wave-undrained.yaml verification)
 pilempm_case_test(verify_saturated_wave_fast cases/verification/saturated-wave-fast.yaml verification)
 pilempm_case_test(verify_hydrostatic_seabed cases/verification/hydrostatic-seabed.yaml verification)
