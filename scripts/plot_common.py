@@ -58,6 +58,14 @@ def read_columns(path, names):
     return cols
 
 
+def read_header(path):
+    """The column names of a CSV file."""
+    if not os.path.exists(path):
+        raise InputError(f"{path}: not found")
+    with open(path, newline="") as f:
+        return next(csv.reader(f), [])
+
+
 def run_main(prog, argv, plot):
     """`prog OUT_DIR`: calls plot(out_dir) and turns input errors into exit status 2."""
     if len(argv) != 2:

@@ -18,7 +18,9 @@
 #include "io/writers/mpm_run_output.hpp"
 #include "io/writers/staged_directory.hpp"
 #include "mpm/analysis/granular_collapse.hpp"
+#include "io/writers/plots.hpp"
 #include "mpm/verification/mpm_checks.hpp"
+#include "mpm/verification/pore_water_checks.hpp"
 
 namespace pilempm::app {
 
@@ -157,6 +159,16 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         }
     }
 
+    const bool poroelastic = std::find(c.verification_checks.begin(), c.verification_checks.end(),
+                                       "poroelastic_wave_history") != c.verification_checks.end();
+    if (poroelastic) {
+        // The probes' histories beside the dynamic poro-elastic reference, for the plot.
+        const mpm::MpmCheckContext context{c.verification_checks, c.verification, c.gravity, c.materials.front().density,
+                                           c.materials.front().model, c.materials.front().poisson_ratio, c.probes};
+        io::write_csv(staged.path() / "poroelastic_wave_histories.csv",
+                      mpm::poroelastic_wave_histories<D>(context, m, run.x0, history));
+    }
+
     io::JsonObject summary;
     summary.add("title", c.title).add("case_file", c.file).add("analysis", std::string("mpm"))
         .add("dimension", static_cast<double>(D))
@@ -212,6 +224,10 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                             k.name.c_str(), k.computed, k.reference, k.tolerance);
     }
     io::write_json(staged.path() / "summary.json", summary);
+    if (poroelastic && c.plots) {
+        std::string note;
+        if (!io::make_plots("plot_poroelastic_wave.py", staged.path(), note) && !quiet) std::printf("  %s\n", note.c_str());
+    }
     staged.commit();
     if (!quiet)
         std::printf("%s\n  %zu material points, %d grid nodes, %ld steps, t = %.4g s\n  results in %s\n", c.title.c_str(),

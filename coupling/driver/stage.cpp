@@ -14,7 +14,13 @@ double StageLoad::factor(int stage, bool quasi_static, double time_in_stage) con
     if (!acts_in(stage)) return 0.0;
     if (duration <= 0.0) return 1.0;
     if (quasi_static || time_in_stage >= duration) return 0.0;
-    return shape == PulseShape::HalfSine ? std::sin(std::numbers::pi * time_in_stage / duration) : 1.0;
+    const double phase = std::sin(std::numbers::pi * time_in_stage / duration);
+    switch (shape) {
+        case PulseShape::HalfSine: return phase;
+        case PulseShape::SineSquared: return phase * phase;
+        case PulseShape::Rectangular: break;
+    }
+    return 1.0;
 }
 
 }  // namespace pilempm::coupling

@@ -29,9 +29,10 @@ struct StageSpec {
     double local_damping = 0.0;  // Cundall's alpha
 };
 
-// The time shape of a pulse: constant over its duration, or p sin(pi t / T), whose smooth
-// rise carries little energy at the grid's cut-off wavelengths.
-enum class PulseShape { Rectangular, HalfSine };
+// The time shape of a pulse: constant over its duration, p sin(pi t / T), whose smooth
+// rise carries little energy at the grid's cut-off wavelengths, or p sin^2(pi t / T), smooth
+// at both ends too (its spectrum falls as 1 / f^3: the pulse for comparing wave histories).
+enum class PulseShape { Rectangular, HalfSine, SineSquared };
 
 // A force on the face of a material point (from a pressure) and when it acts.
 struct StageLoad {

@@ -49,7 +49,7 @@ struct MpmPressureInput {  // on the points in a box: force = -pressure n x face
     double pressure = 0.0;          // Pa, compression positive
     std::array<double, 3> traction{};  // Pa, added to -pressure n (a shear load: along the face)
     double duration = 0.0;          // s; 0: held (a step), else a pulse from each stage's start
-    bool half_sine = false;         // the pulse's shape: p sin(pi t / duration), else constant
+    std::string pulse = "rectangular";  // the pulse's shape: rectangular | half_sine | sine_squared
     std::vector<int> stages;        // the stages it acts in (indices); empty: all
 };
 

@@ -12,6 +12,7 @@ const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder",
                                           "absorbed_energy", "footing_collapse", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
                                           "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
+                                          "poroelastic_wave_history",
                                           "hydrostatic_equilibrium", "skempton_b"};
 
 std::array<double, 3> point(MapReader& m, const std::string& key, int dim) {
@@ -212,7 +213,7 @@ MpmCase read_mpm_case(const std::string& file) {
             p.duration = m.number_or("duration", 0.0, non_negative("pulse duration in s"));
             if (m.has("pulse")) {
                 if (p.duration <= 0.0) m.fail("pulse", "a duration > 0 for a pulse shape", "a held load");
-                p.half_sine = m.choice("pulse", {"rectangular", "half_sine"}) == "half_sine";
+                p.pulse = m.choice("pulse", {"rectangular", "half_sine", "sine_squared"});
             }
             if (m.has("stages"))
                 for (const auto& name : m.words("stages", stage_names))
@@ -264,6 +265,10 @@ MpmCase read_mpm_case(const std::string& file) {
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
+        if (v->has("pulse_duration"))
+            c.verification["pulse_duration"] = v->number("pulse_duration", positive("the load pulse's duration in s"));
+        if (v->has("history_tolerance"))
+            c.verification["history_tolerance"] = v->number("history_tolerance", positive("a share of the load"));
         // The case rerun on other grids (cells x factor along every axis): each check must
         // hold on every grid, and the errors are reported side by side.
         if (v->has("grid_sequence")) {

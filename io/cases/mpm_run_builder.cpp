@@ -153,7 +153,9 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             // The force on each loaded point: (traction - p n) x the point's face area.
             coupling::StageLoad load;
             load.duration = pr.duration;
-            load.shape = pr.half_sine ? coupling::PulseShape::HalfSine : coupling::PulseShape::Rectangular;
+            load.shape = pr.pulse == "half_sine"      ? coupling::PulseShape::HalfSine
+                         : pr.pulse == "sine_squared" ? coupling::PulseShape::SineSquared
+                                                      : coupling::PulseShape::Rectangular;
             load.stages = pr.stages;
             load.load.point = i;
             for (int d = 0; d < D; ++d) load.load.force[d] = pr.traction[d] * area;

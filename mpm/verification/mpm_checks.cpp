@@ -279,6 +279,10 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
             auto v = saturated_wave_arrival<D>(c, m, history, name == "fast_wave_speed");
             out.insert(out.end(), v.begin(), v.end());
         }
+        else if (name == "poroelastic_wave_history") {
+            auto v = poroelastic_wave_history<D>(c, m, x0, history);
+            out.insert(out.end(), v.begin(), v.end());
+        }
         else if (name == "hydrostatic_equilibrium") {
             auto v = hydrostatic_equilibrium<D>(c, m, x0);
             out.insert(out.end(), v.begin(), v.end());

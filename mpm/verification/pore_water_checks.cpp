@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/verification/dynamic_poroelastic_column.hpp"
+
 namespace pilempm::mpm {
 
 double terzaghi_excess_pressure(double z, double T) {
@@ -167,6 +169,91 @@ std::vector<VerificationCheck> saturated_wave_arrival(const MpmCheckContext& c, 
     return out;
 }
 
+// The column's reference: the first material as a half-space below verification.surface,
+// loaded there by verification.load (Pa) as p sin^2(pi t / T), T = verification.
+// pulse_duration (the case's pressure must be that pulse). The probes' depths are their
+// points' initial ones; the reference is sampled at the history's times.
+template <int D>
+Table poroelastic_wave_histories(const MpmCheckContext& c, const MpmModel<D>& m, const std::vector<double>& x0,
+                                 const Table& history) {
+    const char* check = "poroelastic_wave_history";
+    const SaturatedFirstMaterial<D> s(m, check);
+    PoroelasticColumn half_space;
+    half_space.p_wave_modulus = s.M;
+    half_space.porosity = s.n;
+    half_space.solid_density_partial = c.density - s.n * s.rho_w;
+    half_space.water_density = s.rho_w;
+    half_space.water_bulk_modulus = s.Kw;
+    half_space.darcy_resistance = m.drainage.front().drainage == Drainage::Coupled ? s.R : 1e30;
+    const ColumnLoad load{parameter(c, "load", check), parameter(c, "pulse_duration", check), ColumnPulse::SineSquared};
+    const double surface = parameter(c, "surface", check);
+    const auto z = probe_elevations<D>(c, x0);
+    if (z.empty()) throw std::invalid_argument("poroelastic_wave_history needs output.probes in the column");
+    const auto& t = column(history, "time_s");
+    std::vector<std::string> names = {"time_s"};
+    for (std::size_t k = 0; k < z.size(); ++k)
+        for (const char* field : {"excess_pore_pressure_Pa", "stress_vertical_Pa"})
+            for (const char* which : {"computed", "reference"})
+                names.push_back("probe" + std::to_string(k) + "_" + field + "_" + which);
+    Table out("poroelastic_wave_histories", names);
+    out.data[0] = t;
+    // The reference at even times, 200 per pulse or more, interpolated to the run's times
+    // (linear interpolation of the sin^2 pulse: an error below 1e-4 of the load).
+    const std::size_t steps = std::max<std::size_t>(2000, static_cast<std::size_t>(200.0 * t.back() / load.duration));
+    std::vector<double> even(steps + 1);
+    for (std::size_t j = 0; j <= steps; ++j) even[j] = t.back() * static_cast<double>(j) / static_cast<double>(steps);
+    for (std::size_t k = 0; k < z.size(); ++k) {
+        const auto at_even = poroelastic_column_history(half_space, load, surface - z[k], even);
+        std::vector<double> p_even, s_even;
+        for (const auto& r : at_even) p_even.push_back(r.excess_pore_pressure), s_even.push_back(r.effective_stress);
+        std::vector<ColumnResponse> ref;
+        for (double at : t) ref.push_back({interpolate(even, p_even, at), interpolate(even, s_even, at)});
+        const std::string probe = "probe" + std::to_string(k) + "_";
+        auto& p = out.data[1 + 4 * k];
+        auto& p_ref = out.data[2 + 4 * k];
+        auto& sv = out.data[3 + 4 * k];
+        auto& sv_ref = out.data[4 + 4 * k];
+        p = column(history, probe + "excess_pore_pressure_Pa");
+        sv = column(history, probe + "stress_vertical_Pa");
+        for (const auto& r : ref) {
+            p_ref.push_back(r.excess_pore_pressure);
+            sv_ref.push_back(r.effective_stress);
+        }
+    }
+    return out;
+}
+
+// The largest difference between the computed and the reference history at each probe, of
+// the excess pore pressure and of the vertical effective stress, over the load, within
+// verification.history_tolerance (default 0.05).
+template <int D>
+std::vector<VerificationCheck> poroelastic_wave_history(const MpmCheckContext& c, const MpmModel<D>& m,
+                                                        const std::vector<double>& x0, const Table& history) {
+    const double q = parameter(c, "load", "poroelastic_wave_history");
+    const double tol = c.parameters.count("history_tolerance") ? c.parameters.at("history_tolerance") : 0.05;
+    const Table h = poroelastic_wave_histories<D>(c, m, x0, history);
+    std::vector<VerificationCheck> out;
+    for (std::size_t k = 0; 4 * k + 4 < h.columns.size(); ++k) {
+        const char* fields[2] = {"pore_pressure", "effective_stress"};
+        for (int f = 0; f < 2; ++f) {
+            const auto& a = h.data[1 + 4 * k + 2 * f];
+            const auto& b = h.data[2 + 4 * k + 2 * f];
+            double worst = 0.0, peak = 0.0;
+            for (std::size_t j = 0; j < a.size(); ++j) {
+                worst = std::max(worst, std::abs(a[j] - b[j]));
+                peak = std::max(peak, std::abs(b[j]));
+            }
+            auto check = make_check("probe" + std::to_string(k) + "_" + fields[f] + "_history_max_error_over_load",
+                                    worst / q, 0.0, tol, false,
+                                    "largest |computed - reference| over the run / load, against the dynamic "
+                                    "poro-elastic half-space (Laplace domain, inverted)");
+            check.note += " (reference peak " + std::to_string(peak / q) + " of the load)";
+            out.push_back(check);
+        }
+    }
+    return out;
+}
+
 // Saturated ground in equilibrium under its water column: the largest excess pore pressure
 // over the hydrostatic pressure at the deepest point, and the largest displacement over the
 // cell size, both below verification.pore_tolerance (default 1e-3).
@@ -221,7 +308,11 @@ VerificationCheck skempton_b_check(const MpmCheckContext& c, const MpmModel<D>& 
                                                                       const Table&, bool);                         \
     template std::vector<VerificationCheck> hydrostatic_equilibrium<D>(const MpmCheckContext&, const MpmModel<D>&, \
                                                                        const std::vector<double>&);                \
-    template VerificationCheck skempton_b_check<D>(const MpmCheckContext&, const MpmModel<D>&);
+    template VerificationCheck skempton_b_check<D>(const MpmCheckContext&, const MpmModel<D>&);                   \
+    template Table poroelastic_wave_histories<D>(const MpmCheckContext&, const MpmModel<D>&,                       \
+                                                 const std::vector<double>&, const Table&);                        \
+    template std::vector<VerificationCheck> poroelastic_wave_history<D>(const MpmCheckContext&, const MpmModel<D>&, \
+                                                                        const std::vector<double>&, const Table&);
 PILEMPM_PORE_CHECKS(2)
 PILEMPM_PORE_CHECKS(3)
 #undef PILEMPM_PORE_CHECKS

@@ -24,6 +24,15 @@ std::vector<VerificationCheck> terzaghi_consolidation(const MpmCheckContext& c, 
 template <int D>
 std::vector<VerificationCheck> saturated_wave_arrival(const MpmCheckContext& c, const MpmModel<D>& m,
                                                       const Table& history, bool fast);
+// Pore-pressure and effective-stress histories at the probes of a column loaded at its
+// drained surface by a sin^2 pulse, beside the dynamic poro-elastic reference
+// (dynamic_poroelastic_column.hpp): time_s, then per probe computed and reference columns.
+template <int D>
+Table poroelastic_wave_histories(const MpmCheckContext& c, const MpmModel<D>& m, const std::vector<double>& x0,
+                                 const Table& history);
+template <int D>
+std::vector<VerificationCheck> poroelastic_wave_history(const MpmCheckContext& c, const MpmModel<D>& m,
+                                                        const std::vector<double>& x0, const Table& history);
 template <int D>
 std::vector<VerificationCheck> hydrostatic_equilibrium(const MpmCheckContext& c, const MpmModel<D>& m,
                                                        const std::vector<double>& x0);

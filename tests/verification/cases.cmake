@@ -42,6 +42,8 @@ pilempm_case_test(verify_terzaghi_implicit cases/verification/terzaghi-implicit.
 pilempm_case_test(verify_terzaghi_double_drainage_implicit cases/verification/terzaghi-double-drainage-implicit.yaml verification)
 pilempm_case_test(verify_saturated_wave_undrained cases/verification/saturated-wave-undrained.yaml verification)
 pilempm_case_test(verify_saturated_wave_fast cases/verification/saturated-wave-fast.yaml verification)
+pilempm_case_test(verify_saturated_wave_history_high_k cases/verification/saturated-wave-history-high-k.yaml verification)
+pilempm_case_test(verify_saturated_wave_history_low_k cases/verification/saturated-wave-history-low-k.yaml verification)
 pilempm_case_test(verify_hydrostatic_seabed cases/verification/hydrostatic-seabed.yaml verification)
 pilempm_case_test(verify_skempton_b cases/verification/skempton-b.yaml verification)
 pilempm_case_test(verify_skempton_b_compressible cases/verification/skempton-b-compressible.yaml verification)
