@@ -1,0 +1,155 @@
+#include "coupling/contact/penalty_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pilempm::coupling {
+
+namespace {
+
+struct Projection {
+    double xi = 0.0;        // along a -> b, in [0, 1]
+    double distance2 = 0.0;
+};
+
+Projection project(const double* x, const double* xa, const double* xb) {
+    const double tx = xb[0] - xa[0], ty = xb[1] - xa[1];
+    const double l2 = tx * tx + ty * ty;
+    double xi = l2 > 0.0 ? ((x[0] - xa[0]) * tx + (x[1] - xa[1]) * ty) / l2 : 0.0;
+    xi = std::clamp(xi, 0.0, 1.0);
+    const double dx = x[0] - xa[0] - xi * tx, dy = x[1] - xa[1] - xi * ty;
+    return {xi, dx * dx + dy * dy};
+}
+
+}  // namespace
+
+void PenaltyContact::bin_segments(const ContactSurface& s, double margin) {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, longest = 0.0;
+    for (int k = 0; k < s.num_segments(); ++k) {
+        const double* xa = &s.x[2 * s.a[k]];
+        const double* xb = &s.x[2 * s.b[k]];
+        for (int d = 0; d < 2; ++d) {
+            lo[d] = std::min({lo[d], xa[d], xb[d]});
+            hi[d] = std::max({hi[d], xa[d], xb[d]});
+        }
+        longest = std::max(longest, std::hypot(xb[0] - xa[0], xb[1] - xa[1]));
+    }
+    bin_size_ = std::max({longest, 2.0 * margin, 1e-9});
+    for (int d = 0; d < 2; ++d) {
+        bin_origin_[d] = lo[d] - margin - bin_size_;
+        bins_[d] = static_cast<int>((hi[d] + margin + bin_size_ - bin_origin_[d]) / bin_size_) + 1;
+    }
+    // Counting sort of (bin, segment) pairs: each segment in the bins its box, grown by the
+    // margin, overlaps, so a point finds every segment within the margin in its own bin.
+    const int total = bins_[0] * bins_[1];
+    bin_start_.assign(total + 1, 0);
+    auto for_bins = [&](int k, auto&& visit) {
+        const double* xa = &s.x[2 * s.a[k]];
+        const double* xb = &s.x[2 * s.b[k]];
+        int b0[2], b1[2];
+        for (int d = 0; d < 2; ++d) {
+            b0[d] = static_cast<int>((std::min(xa[d], xb[d]) - margin - bin_origin_[d]) / bin_size_);
+            b1[d] = static_cast<int>((std::max(xa[d], xb[d]) + margin - bin_origin_[d]) / bin_size_);
+        }
+        for (int i = b0[0]; i <= b1[0]; ++i)
+            for (int j = b0[1]; j <= b1[1]; ++j) visit(i * bins_[1] + j);
+    };
+    for (int k = 0; k < s.num_segments(); ++k) for_bins(k, [&](int bin) { ++bin_start_[bin + 1]; });
+    for (int b = 0; b < total; ++b) bin_start_[b + 1] += bin_start_[b];
+    bin_items_.assign(bin_start_[total], 0);
+    std::vector<int> fill(bin_start_.begin(), bin_start_.end() - 1);
+    for (int k = 0; k < s.num_segments(); ++k) for_bins(k, [&](int bin) { bin_items_[fill[bin]++] = k; });
+}
+
+int PenaltyContact::nearest_segment(const ContactSurface& s, const double* x, double& xi) const {
+    const int i = static_cast<int>(std::floor((x[0] - bin_origin_[0]) / bin_size_));
+    const int j = static_cast<int>(std::floor((x[1] - bin_origin_[1]) / bin_size_));
+    if (i < 0 || j < 0 || i >= bins_[0] || j >= bins_[1]) return -1;
+    const int bin = i * bins_[1] + j;
+    int best = -1;
+    double best_d2 = 1e300;
+    for (int q = bin_start_[bin]; q < bin_start_[bin + 1]; ++q) {
+        const int k = bin_items_[q];
+        const Projection pr = project(x, &s.x[2 * s.a[k]], &s.x[2 * s.b[k]]);
+        if (pr.distance2 < best_d2) best_d2 = pr.distance2, best = k, xi = pr.xi;
+    }
+    return best;
+}
+
+void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& s, double dt) {
+    const long n = static_cast<long>(p.size());
+    tangential_.resize(n, 0.0);
+    segment_.resize(n, -1);
+    normal_.assign(n, 0.0);
+    nodal_force_.assign(s.x.size(), 0.0);
+    totals_ = {};
+    std::fill(p.external_force.begin(), p.external_force.end(), 0.0);
+    // The search margin: the largest half-extent of a point domain along an axis.
+    double margin = 0.0, half[4];
+    for (long i = 0; i < n; ++i) {
+        mpm::half_domain_edges<2>(p, i, kind, half);
+        margin = std::max({margin, std::abs(half[0]) + std::abs(half[2]), std::abs(half[1]) + std::abs(half[3])});
+    }
+    bin_segments(s, margin);
+    const double mu = settings_.friction, ring = settings_.ring;
+    auto release = [&](long i) {
+        tangential_[i] = 0.0;
+        segment_[i] = -1;
+    };
+    for (long i = 0; i < n; ++i) {
+        const double* x = &p.x[2 * i];
+        double xi = 0.0;
+        const int k = nearest_segment(s, x, xi);
+        if (k < 0) {
+            release(i);
+            continue;
+        }
+        const double* xa = &s.x[2 * s.a[k]];
+        const double* xb = &s.x[2 * s.b[k]];
+        const double len = std::hypot(xb[0] - xa[0], xb[1] - xa[1]);
+        const double t[2] = {(xb[0] - xa[0]) / len, (xb[1] - xa[1]) / len};
+        double nrm[2] = {t[1], -t[0]};
+        const double xs[2] = {xa[0] + xi * (xb[0] - xa[0]), xa[1] + xi * (xb[1] - xa[1])};
+        const double rel[2] = {x[0] - xs[0], x[1] - xs[1]};
+        if (xi <= 0.0 || xi >= 1.0) {
+            // Past the segment's end (a corner): push away from the corner node.
+            const double r = std::hypot(rel[0], rel[1]);
+            if (r > 0.0 && rel[0] * nrm[0] + rel[1] * nrm[1] > 0.0) nrm[0] = rel[0] / r, nrm[1] = rel[1] / r;
+        }
+        const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
+        mpm::half_domain_edges<2>(p, i, kind, half);
+        const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
+        const double gap = d - reach;
+        // Apart, or the point's centre is past the surface (it belongs to the other side).
+        if (gap >= 0.0 || d < -reach) {
+            release(i);
+            continue;
+        }
+        const double kn = settings_.penalty_factor * p.mass[i] / (dt * dt);
+        const double fn = -kn * gap;
+        // Tangential: a spring on the slip since the last step, capped by Coulomb.
+        const double* va = &s.v[2 * s.a[k]];
+        const double* vb = &s.v[2 * s.b[k]];
+        const double vrel = (p.v[2 * i] - (1.0 - xi) * va[0] - xi * vb[0]) * t[0] +
+                            (p.v[2 * i + 1] - (1.0 - xi) * va[1] - xi * vb[1]) * t[1];
+        const bool same_face = segment_[i] >= 0 && s.side[segment_[i]] == s.side[k];
+        double ft = (same_face ? tangential_[i] : 0.0) - settings_.tangential_ratio * kn * vrel * dt;
+        const double cap = mu * fn;
+        if (std::abs(ft) > cap) ft = std::copysign(cap, ft);
+        else if (cap > 0.0) ++totals_.points_sticking;
+        tangential_[i] = ft;
+        segment_[i] = k;
+        normal_[i] = fn;
+        const double f[2] = {fn * nrm[0] + ft * t[0], fn * nrm[1] + ft * t[1]};
+        for (int c = 0; c < 2; ++c) {
+            p.external_force[2 * i + c] = f[c];
+            nodal_force_[2 * s.a[k] + c] -= ring * (1.0 - xi) * f[c];
+            nodal_force_[2 * s.b[k] + c] -= ring * xi * f[c];
+            totals_.force_on_master[c] -= ring * f[c];
+        }
+        ++totals_.points_in_contact;
+        totals_.max_penetration = std::max(totals_.max_penetration, -gap);
+    }
+}
+
+}  // namespace pilempm::coupling

@@ -1,0 +1,67 @@
+#pragma once
+// Penalty contact between material points (slave) and the segments of a master surface,
+// independent of the grid: the gap is from the point's domain to the segment, the normal
+// force -k_n g, the tangential force a penalty spring capped by Coulomb's mu f_n (stick or
+// slip, kept per point between steps). The forces are equal and opposite: each point's on
+// its external force, the master's on the segment's two nodes by the projection's weights
+// (times `ring`: the master integrates the whole ring, the soil is per radian).
+#include <array>
+#include <vector>
+
+#include "coupling/contact/contact_surface.hpp"
+#include "mpm/grid/shape_functions.hpp"
+#include "mpm/points/particles.hpp"
+
+namespace pilempm::coupling {
+
+struct ContactSettings {
+    double friction = 0.0;  // mu = tan(delta)
+    // The penalty k_n = penalty_factor m_p / dt^2 per point: the point's spring then keeps
+    // the explicit step stable (k dt^2 / m < 4 with the master's mass added) whatever the
+    // soil, and penetrates g = f dt^2 / (penalty_factor m_p), below 1 % of a cell for the
+    // stresses of the shipped cases (README: contact).
+    double penalty_factor = 0.25;
+    double tangential_ratio = 1.0;  // k_t / k_n
+    double ring = 1.0;              // master force per point force: 2 pi axisymmetric, 1 plane strain
+};
+
+struct ContactTotals {
+    std::array<double, 2> force_on_master{};  // N (master's measure: the whole ring)
+    double max_penetration = 0.0;             // m, the deepest point domain into a segment
+    int points_in_contact = 0;
+    int points_sticking = 0;
+};
+
+class PenaltyContact {
+public:
+    explicit PenaltyContact(ContactSettings settings) : settings_(settings) {}
+
+    // From the points at t_n and the surface's current geometry: overwrites the points'
+    // external force (zero off contact) and fills nodal_force() (2 per surface node).
+    void compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& surface, double dt);
+
+    const ContactSettings& settings() const { return settings_; }
+    const std::vector<double>& nodal_force() const { return nodal_force_; }
+    const ContactTotals& totals() const { return totals_; }
+    // Per point: the tangential force it carries (N, along its segment's a -> b), its
+    // segment (-1 off contact) and the normal force (N, >= 0), for output and restart.
+    const std::vector<double>& tangential_force() const { return tangential_; }
+    const std::vector<int>& segment() const { return segment_; }
+    const std::vector<double>& normal_force() const { return normal_; }
+    std::vector<double>& tangential_force() { return tangential_; }
+
+private:
+    void bin_segments(const ContactSurface& s, double margin);
+    int nearest_segment(const ContactSurface& s, const double* x, double& xi) const;
+
+    ContactSettings settings_;
+    std::vector<double> nodal_force_, tangential_, normal_;
+    std::vector<int> segment_;
+    ContactTotals totals_;
+    // Segments binned on a uniform grid over the surface's box, grown by the search margin.
+    double bin_origin_[2] = {0.0, 0.0}, bin_size_ = 1.0;
+    int bins_[2] = {0, 0};
+    std::vector<int> bin_start_, bin_items_;
+};
+
+}  // namespace pilempm::coupling

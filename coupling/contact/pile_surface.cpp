@@ -1,0 +1,55 @@
+#include "coupling/contact/pile_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace pilempm::coupling {
+
+ContactSurface pile_contact_surface(const fem::PileMesh& mesh) {
+    if (mesh.dim != 2) throw std::invalid_argument("pile contact needs the axisymmetric wall mesh (a rod has no surface)");
+    // Each edge of every quad, keyed by its sorted ends: those seen once are the boundary,
+    // kept in the quad's (counter-clockwise) direction.
+    std::map<std::pair<int, int>, std::pair<int, int>> once;
+    for (const auto& block : mesh.blocks) {
+        if (block.kind != fem::ElementKind::AxisymQuad4) continue;
+        for (int e = 0; e < block.num_elements(); ++e) {
+            const int* q = &block.connectivity[4 * e];
+            for (int k = 0; k < 4; ++k) {
+                const int from = q[k], to = q[(k + 1) % 4];
+                const auto key = std::minmax(from, to);
+                if (!once.erase(key)) once[key] = {from, to};
+            }
+        }
+    }
+    if (once.empty()) throw std::invalid_argument("pile contact: the mesh has no axisymmetric quads");
+    ContactSurface s;
+    s.x.assign(mesh.coordinates.begin(), mesh.coordinates.end());
+    s.v.assign(mesh.coordinates.size(), 0.0);
+    for (const auto& [key, edge] : once) {
+        const double* xa = &mesh.coordinates[2 * edge.first];
+        const double* xb = &mesh.coordinates[2 * edge.second];
+        const double tr = xb[0] - xa[0], tz = xb[1] - xa[1];
+        const double nr = tz, nz = -tr;  // outward: to the right of a -> b
+        SurfaceSide side;
+        if (std::abs(nr) >= std::abs(nz)) side = nr > 0.0 ? SurfaceSide::Outer : SurfaceSide::Inner;
+        else side = nz > 0.0 ? SurfaceSide::Head : SurfaceSide::Toe;
+        s.add_segment(edge.first, edge.second, side);
+    }
+    return s;
+}
+
+void place_pile_surface(ContactSurface& surface, const fem::PileMesh& mesh, const std::vector<double>& u,
+                        const std::vector<double>& v, const PileFrame& frame) {
+    const int n = mesh.num_nodes();
+    for (int i = 0; i < n; ++i) {
+        surface.x[2 * i] = mesh.coordinates[2 * i] + u[2 * i];
+        surface.x[2 * i + 1] = mesh.coordinates[2 * i + 1] + u[2 * i + 1] + frame.toe_elevation;
+        surface.v[2 * i] = v[2 * i];
+        surface.v[2 * i + 1] = v[2 * i + 1];
+    }
+}
+
+}  // namespace pilempm::coupling

@@ -1,0 +1,25 @@
+#pragma once
+// The FE pile as a contact master: the boundary edges of its axisymmetric wall (edges used
+// by one quad only), named by where they lie, and placed in the soil's frame each step.
+#include <vector>
+
+#include "coupling/contact/contact_surface.hpp"
+#include "fem/mesh/pile_mesh.hpp"
+
+namespace pilempm::coupling {
+
+// The pile's frame (toe at z = 0) in the soil's: soil y = pile z + toe_elevation; r alike.
+struct PileFrame {
+    double toe_elevation = 0.0;  // m, in the soil's frame
+};
+
+// The boundary of the mesh's AxisymQuad4 blocks as segments, node k of the surface being
+// node k of the mesh; sides by the outward normal (outer r+, inner r-, toe z-, head z+).
+// Throws std::invalid_argument for a rod mesh, which has no surface.
+ContactSurface pile_contact_surface(const fem::PileMesh& mesh);
+
+// Positions (reference + u, shifted into the soil's frame) and velocities of the nodes.
+void place_pile_surface(ContactSurface& surface, const fem::PileMesh& mesh, const std::vector<double>& u,
+                        const std::vector<double>& v, const PileFrame& frame);
+
+}  // namespace pilempm::coupling
