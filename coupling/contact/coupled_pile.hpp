@@ -15,8 +15,11 @@ namespace pilempm::coupling {
 
 class CoupledPile {
 public:
-    // gravity: the pile's own weight, m/s^2 down (n g in a centrifuge).
-    CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity = 0.0);
+    // gravity: the pile's own weight, m/s^2 down (n g in a centrifuge). cut_fields: the
+    // soil inside and outside an open wall on their own grid fields (a grid of 2 fields, 4
+    // with water), the cut along the wall's mid-line moving with it.
+    CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity = 0.0,
+                bool cut_fields = true);
 
     void step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt);
 
@@ -34,6 +37,7 @@ private:
     PenaltyContact contact_;
     PileFrame frame_;
     double gravity_;
+    bool cut_fields_;
     ContactSurface surface_;
     int substeps_ = 1;
     std::array<double, 2> impulse_{};

@@ -1,6 +1,7 @@
 #include "coupling/contact/pile_surface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -50,6 +51,28 @@ void place_pile_surface(ContactSurface& surface, const fem::PileMesh& mesh, cons
         surface.v[2 * i] = v[2 * i];
         surface.v[2 * i + 1] = v[2 * i + 1];
     }
+}
+
+std::vector<double> pile_mid_line(const fem::PileMesh& mesh, const std::vector<double>& u, const PileFrame& frame) {
+    // Levels by reference z (the structured wall has one row of nodes per level).
+    std::map<double, std::array<double, 3>> level;  // z -> {r_min, r_max, sum of current z}
+    std::map<double, int> count;
+    for (int i = 0; i < mesh.num_nodes(); ++i) {
+        const double z = mesh.coordinates[2 * i + 1];
+        const double r = mesh.coordinates[2 * i] + u[2 * i];
+        const double zc = z + u[2 * i + 1] + frame.toe_elevation;
+        auto [it, fresh] = level.try_emplace(z, std::array<double, 3>{r, r, 0.0});
+        it->second[0] = std::min(it->second[0], r);
+        it->second[1] = std::max(it->second[1], r);
+        it->second[2] += zc;
+        ++count[z];
+    }
+    std::vector<double> line;
+    for (const auto& [z, l] : level) {
+        line.push_back(0.5 * (l[0] + l[1]));
+        line.push_back(l[2] / count[z]);
+    }
+    return line;
 }
 
 }  // namespace pilempm::coupling

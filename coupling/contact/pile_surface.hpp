@@ -22,4 +22,9 @@ ContactSurface pile_contact_surface(const fem::PileMesh& mesh);
 void place_pile_surface(ContactSurface& surface, const fem::PileMesh& mesh, const std::vector<double>& u,
                         const std::vector<double>& v, const PileFrame& frame);
 
+// The wall's mid-line in the soil's frame, toe to head: at each level of the mesh's nodes
+// (equal reference z) the middle of its radial extent, as a field cut's polyline (2 per
+// vertex, ascending in y).
+std::vector<double> pile_mid_line(const fem::PileMesh& mesh, const std::vector<double>& u, const PileFrame& frame);
+
 }  // namespace pilempm::coupling

@@ -49,6 +49,15 @@ MpmSolver<D>::MpmSolver(MpmModel<D>& model) : m_(model) {
     if (m_.grid.water && m_.particles.field.size() > 0)
         for (const int f : m_.particles.field)
             if (f % 2 != 0) throw std::invalid_argument("material points move with solid (even) fields of a grid with water");
+    int top_field = 0;
+    for (const int f : m_.particles.field) top_field = std::max(top_field, f);
+    for (const auto& cut : m_.field_cuts) {
+        if (D != 2) throw std::invalid_argument("field cuts are two-dimensional (a wall's mid-line)");
+        if (cut.offset <= 0 || top_field + cut.offset >= m_.grid.fields || (m_.grid.water && cut.offset % 2 != 0))
+            throw std::invalid_argument("a field cut of offset " + std::to_string(cut.offset) + " needs a grid of more than " +
+                                        std::to_string(top_field + cut.offset) + " fields (in pairs with water), it has " +
+                                        std::to_string(m_.grid.fields));
+    }
     stencil_.resize(m_.particles.size());
     mass_ = total_mass();  // points keep their mass: the grid's "empty node" threshold is fixed
 }
@@ -277,6 +286,8 @@ void MpmSolver<D>::build_stencil(long i) {
     half_edges(i, half);
     evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &m_.particles.x[D * i], half, stencil_[i],
                       m_.particles.field[i]);
+    if constexpr (D == 2)
+        if (!m_.field_cuts.empty()) apply_field_cuts(m_.grid, m_.field_cuts, &m_.particles.x[D * i], stencil_[i]);
 }
 
 // Per grid entry: mass, momentum, total force, and (PointForces) the forces applied to points

@@ -12,6 +12,7 @@
 
 #include "mpm/materials/constitutive_model.hpp"
 #include "mpm/materials/pore_water.hpp"
+#include "mpm/grid/field_cut.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/points/particles.hpp"
 #include "mpm/grid/shape_functions.hpp"
@@ -44,6 +45,8 @@ struct MpmModel {
     // coupled material needs a grid with water fields (Grid::water).
     std::vector<MaterialDrainage> drainage;
     PoreWater water;
+    // Thin walls the grid's fields are cut along (D = 2; a pile's wall, set by coupling).
+    std::vector<FieldCut> field_cuts;
     bool saturated() const {
         for (const auto& d : drainage)
             if (d.saturated()) return true;

@@ -86,7 +86,7 @@ Collision collide(double h) {
     mpm::MpmSolver<2> soil(m);
     ContactSettings settings;
     settings.ring = full_ring(1.0);
-    CoupledPile coupled(pile, settings, PileFrame{kLength + gap});
+    CoupledPile coupled(pile, settings, PileFrame{kLength + gap}, 0.0, false);  // no soil inside: no cut
 
     const double dt = soil.stable_time_step();
     const double p0 = full_ring(soil.momentum()[1]);

@@ -1,0 +1,53 @@
+#include "mpm/grid/field_cut.hpp"
+
+#include <algorithm>
+
+namespace pilempm::mpm {
+
+namespace {
+
+// The side of p against the directed line c -> d: +1 left or on it, -1 right.
+int side(const double* c, const double* d, const double* p) {
+    const double cross = (d[0] - c[0]) * (p[1] - c[1]) - (d[1] - c[1]) * (p[0] - c[0]);
+    return cross >= 0.0 ? 1 : -1;
+}
+
+}  // namespace
+
+bool FieldCut::crosses(const double* a, const double* b) const {
+    const int n = num_vertices();
+    if (n < 2) return false;
+    const double lo = std::min(a[1], b[1]), hi = std::max(a[1], b[1]);
+    const double* v = vertices.data();
+    if (hi < v[1] || lo > v[2 * n - 1]) return false;
+    // The first polyline segment that reaches lo (vertices ascend in y).
+    int k = 0, top = n - 1;
+    while (top - k > 1) {
+        const int mid = (k + top) / 2;
+        (v[2 * mid + 1] <= lo ? k : top) = mid;
+    }
+    // Crossings counted with half-open ends, so a line through a vertex counts once; b is
+    // across when the count is odd.
+    int crossings = 0;
+    for (; k < n - 1 && v[2 * k + 1] <= hi; ++k) {
+        const double* c = v + 2 * k;
+        const double* d = v + 2 * k + 2;
+        if (side(c, d, a) == side(c, d, b)) continue;
+        const double ca = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        const double da = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+        if ((ca > 0.0) != (da > 0.0)) ++crossings;
+    }
+    return crossings % 2 == 1;
+}
+
+void apply_field_cuts(const Grid<2>& grid, const std::vector<FieldCut>& cuts, const double* x, Stencil<2>& s) {
+    for (int k = 0; k < s.count; ++k) {
+        const int stored = s.e[k].node / grid.fields;
+        const auto ijk = grid.stored_ijk(stored);
+        const double node[2] = {grid.coordinate(0, ijk[0]), grid.coordinate(1, ijk[1])};
+        for (const auto& cut : cuts)
+            if (cut.crosses(x, node)) s.e[k].node += cut.offset;
+    }
+}
+
+}  // namespace pilempm::mpm
