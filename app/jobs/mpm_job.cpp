@@ -9,6 +9,8 @@
 
 #include "app/jobs/verification_runner.hpp"
 #include "core/table.hpp"
+#include "coupling/contact/coupled_pile.hpp"
+#include "coupling/contact/pile_recorder.hpp"
 #include "coupling/driver/stage_driver.hpp"
 #include "io/cases/mpm_case.hpp"
 #include "io/cases/mpm_run_builder.hpp"
@@ -101,7 +103,8 @@ std::vector<VerificationCheck> convergence_checks(const io::MpmCase& c,
 
 std::string fingerprint(const io::MpmCase& c) {
     return c.file + "|" + std::to_string(c.dimension) + "|" + std::to_string(c.cells[0]) + "x" +
-           std::to_string(c.cells[1]) + "x" + std::to_string(c.cells[2]) + "|" + std::to_string(c.stages.size());
+           std::to_string(c.cells[1]) + "x" + std::to_string(c.cells[2]) + "|" + std::to_string(c.stages.size()) +
+           (c.pile.present ? "|pile" : "");
 }
 
 template <int D>
@@ -132,9 +135,25 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
+    // The FE pile, coupled to the soil through the contact, carried by the soil's stages.
+    std::unique_ptr<fem::ExplicitPile> pile;
+    std::unique_ptr<coupling::CoupledPile> coupled;
+    if constexpr (D == 2) {
+        if (run.pile.present) {
+            pile = std::make_unique<fem::ExplicitPile>(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
+            coupled = std::make_unique<coupling::CoupledPile>(*pile, run.pile.contact, run.pile.frame, run.pile.gravity,
+                                                              run.pile.cut_fields);
+            coupled->set_head_control(run.pile.heads);
+            driver.couple(coupled.get());
+            output.set_body(coupled.get());
+            driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled));
+        }
+    }
     if (resume) {
         output.adopt_snapshots(restored.snapshot_times);
         driver.resume(restored.driver, restored.solver, restored.history);
+        if constexpr (D == 2)
+            if (coupled) coupled->restore(restored.body);
     }
     const coupling::StopRequest stop(!resume);
     if (driver.run(&stop) == coupling::StageDriver<D>::Outcome::Stopped) {

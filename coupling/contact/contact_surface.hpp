@@ -19,6 +19,9 @@ struct ContactSurface {
     // t = x_b - x_a (the body lies to the left of a -> b: counter-clockwise boundaries).
     std::vector<int> a, b;
     std::vector<SurfaceSide> side;
+    // 1 / mass of each node in the master's measure (1/kg; empty: a rigid, held surface),
+    // for a penalty as stiff as the pair of bodies allows.
+    std::vector<double> inverse_mass;
 
     int num_nodes() const { return static_cast<int>(x.size() / 2); }
     int num_segments() const { return static_cast<int>(a.size()); }

@@ -9,9 +9,13 @@ namespace pilempm::coupling {
 CoupledPile::CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity,
                          bool cut_fields)
     : pile_(pile), contact_(contact), frame_(frame), gravity_(gravity), cut_fields_(cut_fields),
-      surface_(pile_contact_surface(pile.mesh())) {}
+      surface_(pile_contact_surface(pile.mesh())) {
+    const auto& mass = pile_.operators().lumped_mass;
+    surface_.inverse_mass.resize(pile_.mesh().num_nodes());
+    for (int i = 0; i < pile_.mesh().num_nodes(); ++i) surface_.inverse_mass[i] = 1.0 / mass[2 * i + 1];
+}
 
-void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt) {
+void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage) {
     place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);
     if (cut_fields_) {
         const int offset = m.grid.water ? 2 : 1;
@@ -20,13 +24,21 @@ void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt) 
                                         std::to_string(2 * offset) + " velocity fields");
         m.field_cuts = {mpm::FieldCut{pile_mid_line(pile_.mesh(), pile_.displacement(), frame_), offset}};
     }
-    contact_.compute(m.particles, m.shape, surface_, dt);
-    // Subcycles of the pile inside the soil's step, the contact force held over them.
-    substeps_ = std::max(1, static_cast<int>(std::ceil(dt / (0.95 * pile_.stable_time_step()))));
-    const double h = dt / substeps_;
+    modulus_.resize(m.materials.size());
+    for (std::size_t k = 0; k < m.materials.size(); ++k) modulus_[k] = m.materials[k]->p_wave_modulus();
+    contact_.compute(m.particles, m.shape, surface_, dt, modulus_);
+    contact_dt_ = contact_.totals().stable_time_step;
+    const PileHeadControl head = stage < static_cast<int>(head_.size()) ? head_[stage] : PileHeadControl{};
+    pile_.set_local_damping(m.local_damping);  // the stage's, as the soil's
+    // Subcycles of the pile inside the soil's step, the contact force held over them. Local
+    // damping raises a force against the motion by 1 + alpha: the step shrinks by its root.
+    const double pile_dt = 0.95 * pile_.stable_time_step() / std::sqrt(1.0 + m.local_damping);
+    substeps_ = std::max(1, static_cast<int>(std::ceil(dt / pile_dt)));
+    const double sub = dt / substeps_;
     const auto& f = contact_.nodal_force();
     const auto& mass = pile_.operators().lumped_mass;
     const int nodes = pile_.mesh().num_nodes();
+    double jack_impulse = 0.0;  // up positive
     for (int s = 0; s < substeps_; ++s) {
         pile_.compute_internal_force();
         pile_.clear_external_force();
@@ -34,10 +46,21 @@ void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt) 
             pile_.add_nodal_force(2 * i, f[2 * i]);
             pile_.add_nodal_force(2 * i + 1, f[2 * i + 1] - mass[2 * i + 1] * gravity_);
         }
-        pile_.advance_velocity(h);
-        pile_.advance_displacement(h);
+        pile_.advance_velocity(sub);
+        if (head.driven) {
+            // The jack sets the head plate's velocity: the impulse that takes is its force.
+            const double dv = -head.velocity_down - pile_.head_velocity();
+            pile_.add_head_velocity(dv);
+            jack_impulse += pile_.head_mass() * dv;
+        }
+        pile_.advance_displacement(sub);
     }
+    head_force_ = -jack_impulse / dt;
     for (int c = 0; c < 2; ++c) impulse_[c] += contact_.totals().force_on_master[c] * dt;
+}
+
+void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage) {
+    advance(m, dt, stage);
     soil.step(dt);
 }
 
@@ -47,6 +70,32 @@ std::array<double, 2> CoupledPile::momentum() const {
     const auto& mass = pile_.operators().lumped_mass;
     for (std::size_t k = 0; k < v.size(); ++k) p[k % 2] += mass[k] * v[k];
     return p;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() const {
+    std::vector<double> segment(contact_.segment().begin(), contact_.segment().end());
+    return {{"pile_displacement", pile_.displacement()},
+            {"pile_velocity", pile_.velocity()},
+            {"contact_tangential_force", contact_.tangential_force()},
+            {"contact_segment", segment},
+            {"pile_contact_impulse", {impulse_[0], impulse_[1]}},
+            {"pile_head_force", {head_force_}},
+            {"contact_time_step", {contact_dt_}}};
+}
+
+void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) {
+    auto find = [&](const std::string& name) -> const std::vector<double>& {
+        for (const auto& [key, values] : arrays)
+            if (key == name) return values;
+        throw std::runtime_error("the checkpoint has no " + name + " (written without the pile?)");
+    };
+    pile_.restore(find("pile_displacement"), find("pile_velocity"));
+    const auto& seg = find("contact_segment");
+    contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()));
+    const auto& imp = find("pile_contact_impulse");
+    impulse_ = {imp.at(0), imp.at(1)};
+    head_force_ = find("pile_head_force").at(0);
+    contact_dt_ = find("contact_time_step").at(0);
 }
 
 }  // namespace pilempm::coupling

@@ -3,17 +3,28 @@
 // and the pile at t_n, then the pile subcycled over the step (its stable step is smaller)
 // with those forces held, then the soil's step with the same forces on its points. The
 // interface impulse f dt is therefore the same on both sides: pile + soil momentum is
-// conserved to round-off.
+// conserved to round-off. Per stage the head is free, or driven at a set velocity (jacking,
+// a displacement-controlled load test; 0 holds it), the jack's force recorded.
+#include <algorithm>
 #include <array>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "coupling/contact/penalty_contact.hpp"
 #include "coupling/contact/pile_surface.hpp"
+#include "coupling/driver/coupled_body.hpp"
 #include "fem/dynamics/explicit_pile.hpp"
 #include "mpm/solver/mpm_solver.hpp"
 
 namespace pilempm::coupling {
 
-class CoupledPile {
+struct PileHeadControl {
+    bool driven = false;        // false: the head is free
+    double velocity_down = 0.0;  // m/s when driven (0: held)
+};
+
+class CoupledPile final : public CoupledBody<2> {
 public:
     // gravity: the pile's own weight, m/s^2 down (n g in a centrifuge). cut_fields: the
     // soil inside and outside an open wall on their own grid fields (a grid of 2 fields, 4
@@ -21,12 +32,32 @@ public:
     CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity = 0.0,
                 bool cut_fields = true);
 
-    void step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt);
+    // The head's control in each stage (index); stages beyond the list leave it free.
+    void set_head_control(std::vector<PileHeadControl> per_stage) { head_ = std::move(per_stage); }
+
+    // Contact and the pile over dt (stage: whose head control), the soil's step left to the caller.
+    void advance(mpm::MpmModel<2>& m, double dt, int stage = 0);
+    // advance(), then the soil's step: the whole coupled step.
+    void step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage = 0);
+
+    // The soil's step, or the contact's where it is shorter (its penalty's stability).
+    double stable_time_step(const mpm::MpmModel<2>&, double soil_dt) const override {
+        return std::min(soil_dt, contact_dt_);
+    }
+    void before_step(mpm::MpmModel<2>& m, int stage, bool, double dt) override { advance(m, dt, stage); }
+    void come_to_rest() override { pile_.stop(); }
+    std::vector<std::pair<std::string, std::vector<double>>> state() const override;
+    void restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) override;
 
     fem::ExplicitPile& pile() { return pile_; }
+    const fem::ExplicitPile& pile() const { return pile_; }
     const PenaltyContact& contact() const { return contact_; }
     const ContactSurface& surface() const { return surface_; }
+    const PileFrame& frame() const { return frame_; }
     int substeps() const { return substeps_; }
+    // The jack's force on the head over the last step (N, compression positive; 0 when free).
+    double head_force() const { return head_force_; }
+    double head_settlement() const { return -pile_.head_displacement(); }  // m, down positive
     // The pile's momentum (the whole ring; velocities at the last half step), N s.
     std::array<double, 2> momentum() const;
     // The impulse the contact gave the pile since the start (the whole ring), N s.
@@ -39,7 +70,11 @@ private:
     double gravity_;
     bool cut_fields_;
     ContactSurface surface_;
+    std::vector<PileHeadControl> head_;
     int substeps_ = 1;
+    double contact_dt_ = 1e300;  // s: the step the contact allows (none yet)
+    std::vector<double> modulus_;  // P-wave modulus per material, Pa
+    double head_force_ = 0.0;
     std::array<double, 2> impulse_{};
 };
 

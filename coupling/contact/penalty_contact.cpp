@@ -76,7 +76,8 @@ int PenaltyContact::nearest_segment(const ContactSurface& s, const double* x, do
     return best;
 }
 
-void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& s, double dt) {
+void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& s, double dt,
+                             const std::vector<double>& modulus) {
     const long n = static_cast<long>(p.size());
     tangential_.resize(n, 0.0);
     segment_.resize(n, -1);
@@ -111,21 +112,48 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         double nrm[2] = {t[1], -t[0]};
         const double xs[2] = {xa[0] + xi * (xb[0] - xa[0]), xa[1] + xi * (xb[1] - xa[1])};
         const double rel[2] = {x[0] - xs[0], x[1] - xs[1]};
-        if (xi <= 0.0 || xi >= 1.0) {
-            // Past the segment's end (a corner): push away from the corner node.
-            const double r = std::hypot(rel[0], rel[1]);
-            if (r > 0.0 && rel[0] * nrm[0] + rel[1] * nrm[1] > 0.0) nrm[0] = rel[0] / r, nrm[1] = rel[1] / r;
-        }
-        const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
         mpm::half_domain_edges<2>(p, i, kind, half);
-        const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
-        const double gap = d - reach;
-        // Apart, or the point's centre is past the surface (it belongs to the other side).
-        if (gap >= 0.0 || d < -reach) {
-            release(i);
-            continue;
+        // k_n across the point's thickness along n, and the step the pair needs: every point
+        // the search finds, so one about to touch has its step already.
+        double compliance = 1.0 / p.mass[i];
+        if (!s.inverse_mass.empty())
+            compliance += ring * ((1.0 - xi) * (1.0 - xi) * s.inverse_mass[s.a[k]] + xi * xi * s.inverse_mass[s.b[k]]);
+        auto stiffness = [&](const double* dir) {
+            const double thickness = 2.0 * (std::abs(half[0] * dir[0] + half[1] * dir[1]) + std::abs(half[2] * dir[0] + half[3] * dir[1]));
+            return settings_.penalty_factor * modulus[p.material[i]] * p.volume[i] / (thickness * thickness);
+        };
+        totals_.stable_time_step = std::min(totals_.stable_time_step, 0.5 / std::sqrt(stiffness(nrm) * compliance));
+        double gap;
+        if ((xi <= 0.0 || xi >= 1.0) && rel[0] * nrm[0] + rel[1] * nrm[1] > 0.0) {
+            // Past the segment's end, outside: the corner node against the point's domain
+            // (a parallelogram of half-edges e1, e2): node - x = a e1 + b e2, inside when
+            // |a|, |b| < 1; the point leaves it along the edge nearer the node.
+            const double det = half[0] * half[3] - half[1] * half[2];
+            const double a = (-rel[0] * half[3] + rel[1] * half[2]) / det;
+            const double b = (rel[0] * half[1] - rel[1] * half[0]) / det;
+            if (std::abs(a) >= 1.0 || std::abs(b) >= 1.0) {
+                release(i);
+                continue;
+            }
+            const double l1 = std::hypot(half[0], half[1]), l2 = std::hypot(half[2], half[3]);
+            const double depth1 = (1.0 - std::abs(a)) * l1, depth2 = (1.0 - std::abs(b)) * l2;
+            const bool first = depth1 <= depth2;
+            const double sign = -((first ? a : b) > 0.0 ? 1.0 : -1.0);
+            nrm[0] = sign * (first ? half[0] / l1 : half[2] / l2);
+            nrm[1] = sign * (first ? half[1] / l1 : half[3] / l2);
+            gap = -(first ? depth1 : depth2);
+        } else {
+            const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
+            const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
+            gap = d - reach;
+            // Apart, or the point's centre is past the surface (it belongs to the other side).
+            if (gap >= 0.0 || d < -reach) {
+                release(i);
+                continue;
+            }
         }
-        const double kn = settings_.penalty_factor * p.mass[i] / (dt * dt);
+        const double kn = stiffness(nrm);
+        totals_.stable_time_step = std::min(totals_.stable_time_step, 0.5 / std::sqrt(kn * compliance));
         const double fn = -kn * gap;
         // Tangential: a spring on the slip since the last step, capped by Coulomb.
         const double* va = &s.v[2 * s.a[k]];
@@ -146,6 +174,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             nodal_force_[2 * s.a[k] + c] -= ring * (1.0 - xi) * f[c];
             nodal_force_[2 * s.b[k] + c] -= ring * xi * f[c];
             totals_.force_on_master[c] -= ring * f[c];
+            totals_.force_by_side[static_cast<int>(s.side[k])][c] -= ring * f[c];
         }
         ++totals_.points_in_contact;
         totals_.max_penetration = std::max(totals_.max_penetration, -gap);

@@ -6,6 +6,7 @@
 // its external force, the master's on the segment's two nodes by the projection's weights
 // (times `ring`: the master integrates the whole ring, the soil is per radian).
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "coupling/contact/contact_surface.hpp"
@@ -16,20 +17,25 @@ namespace pilempm::coupling {
 
 struct ContactSettings {
     double friction = 0.0;  // mu = tan(delta)
-    // The penalty k_n = penalty_factor m_p / dt^2 per point: the point's spring then keeps
-    // the explicit step stable (k dt^2 / m < 4 with the master's mass added) whatever the
-    // soil, and penetrates g = f dt^2 / (penalty_factor m_p), below 1 % of a cell for the
-    // stresses of the shipped cases (README: contact).
-    double penalty_factor = 0.25;
+    // The penalty per point from the soil's stiffness, k_n = penalty_factor M V_p / h_p^2
+    // (M its P-wave modulus, V_p its volume, h_p its thickness across the contact): a
+    // contact traction sigma penetrates g = sigma h_p / (penalty_factor M), g / h =
+    // sigma / (2 penalty_factor M) with two points a cell: below 1 % while sigma < 8 % of M. Independent of the step, so the
+    // contact stores and gives back its energy; the step it needs (the point and the
+    // segment's nodes as two masses on the spring, omega dt <= 0.5) is totals().stable_time_step.
+    double penalty_factor = 4.0;
     double tangential_ratio = 1.0;  // k_t / k_n
     double ring = 1.0;              // master force per point force: 2 pi axisymmetric, 1 plane strain
 };
 
 struct ContactTotals {
     std::array<double, 2> force_on_master{};  // N (master's measure: the whole ring)
+    // The same by the side of the master it acts on (SurfaceSide: outer, inner, toe, head, other).
+    std::array<std::array<double, 2>, 5> force_by_side{};
     double max_penetration = 0.0;             // m, the deepest point domain into a segment
     int points_in_contact = 0;
     int points_sticking = 0;
+    double stable_time_step = 1e300;  // s, over the points near the surface
 };
 
 class PenaltyContact {
@@ -38,7 +44,9 @@ public:
 
     // From the points at t_n and the surface's current geometry: overwrites the points'
     // external force (zero off contact) and fills nodal_force() (2 per surface node).
-    void compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& surface, double dt);
+    // modulus: the P-wave modulus of each material (Pa); dt: the step the forces act over.
+    void compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& surface, double dt,
+                 const std::vector<double>& modulus);
 
     const ContactSettings& settings() const { return settings_; }
     const std::vector<double>& nodal_force() const { return nodal_force_; }
@@ -48,7 +56,11 @@ public:
     const std::vector<double>& tangential_force() const { return tangential_; }
     const std::vector<int>& segment() const { return segment_; }
     const std::vector<double>& normal_force() const { return normal_; }
-    std::vector<double>& tangential_force() { return tangential_; }
+    // A checkpoint's history back: tangential forces and segments per point.
+    void restore(std::vector<double> tangential, std::vector<int> segment) {
+        tangential_ = std::move(tangential);
+        segment_ = std::move(segment);
+    }
 
 private:
     void bin_segments(const ContactSurface& s, double margin);

@@ -75,6 +75,20 @@ bool StageDriver<D>::periodic_checkpoint_and_stop(const StopRequest* stop) {
     return true;
 }
 
+// The soil's stable step, and the coupled body's limit on it.
+template <int D>
+double StageDriver<D>::step_size() const {
+    const double dt = solver_.stable_time_step();
+    return body_ ? std::min(dt, body_->stable_time_step(m_, dt)) : dt;
+}
+
+// The body first (its forces on the points, itself over the step), then the soil.
+template <int D>
+void StageDriver<D>::step(double dt, bool quasi_static) {
+    if (body_) body_->before_step(m_, state_.stage, quasi_static, dt);
+    solver_.step(dt);
+}
+
 // Pseudo-time: the clock stands still, held loads only, until equilibrium. The local damping
 // is the dissipation: PIC's velocity projection would fight it (pure PIC never settles), so
 // the stage runs pure FLIP. Returns false when stopped.
@@ -86,7 +100,7 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
     long n = state_.stage_steps;
     for (; n < st.max_steps; ++n) {
         apply_loads(true, 0.0);
-        solver_.step(solver_.stable_time_step());
+        step(step_size(), true);
         state_.stage_steps = n + 1;
         if (n % settings_.quasi_static_record_every == 0) record();
         if (n >= 100 && solver_.unbalanced_force_ratio() < st.tolerance) break;
@@ -103,6 +117,7 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
     m_.apic = apic_dynamic_;
     std::fill(m_.particles.v.begin(), m_.particles.v.end(), 0.0);  // a nil step: start at rest
     std::fill(m_.particles.C.begin(), m_.particles.C.end(), 0.0);
+    if (body_) body_->come_to_rest();
     solver_.set_time(state_.stage_start_time, solver_.steps());
     report.steps = n;
     report.unbalanced_ratio = solver_.unbalanced_force_ratio();
@@ -136,8 +151,7 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
     StageReport report;
     while (solver_.time() < t_end - 1e-15) {
         apply_loads(false, solver_.time() - state_.stage_start_time);
-        const double dt = std::min(solver_.stable_time_step(), t_end - solver_.time());
-        solver_.step(dt);
+        step(std::min(step_size(), t_end - solver_.time()), false);
         ++state_.stage_steps;
         if (!after_real_time_step(st, report, stop)) return false;
     }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/table.hpp"
+#include "coupling/driver/coupled_body.hpp"
 #include "coupling/driver/recorders.hpp"
 #include "coupling/driver/stage.hpp"
 #include "coupling/driver/stop_request.hpp"
@@ -62,6 +63,9 @@ public:
     StageDriver(mpm::MpmModel<D>& model, std::vector<StageSpec> stages, std::vector<StageLoad> loads,
                 DriverSettings settings, StageObserver<D>* observer = nullptr);
 
+    // A body carried along (the pile): it acts before each of the soil's steps. Not owned.
+    void couple(CoupledBody<D>* body) { body_ = body; }
+
     // History columns: time_s, step, stage (1-based), then each recorder's, in order added.
     void add_recorder(std::unique_ptr<Recorder<D>> recorder);
 
@@ -88,6 +92,8 @@ private:
     bool run_dynamic(const StageSpec& st, const StopRequest* stop);
     bool run_consolidation(const StageSpec& st, const StopRequest* stop);
     bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop);
+    double step_size() const;
+    void step(double dt, bool quasi_static);
 
     mpm::MpmModel<D>& m_;
     mpm::MpmSolver<D> solver_;
@@ -97,6 +103,7 @@ private:
     StageObserver<D>* observer_;
     StageObserver<D> quiet_;
     std::vector<std::unique_ptr<Recorder<D>>> recorders_;
+    CoupledBody<D>* body_ = nullptr;
     Table history_;
     DriverState state_;
     mpm::ConsolidationStepReport last_consolidation_;

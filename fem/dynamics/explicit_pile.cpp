@@ -1,7 +1,9 @@
 #include "fem/dynamics/explicit_pile.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace pilempm::fem {
 
@@ -90,6 +92,14 @@ ExplicitPile::ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSu
     }
 }
 
+void ExplicitPile::restore(const std::vector<double>& u, const std::vector<double>& v) {
+    if (u.size() != u_.size() || v.size() != v_.size())
+        throw std::invalid_argument("pile state of " + std::to_string(u.size()) + " DOFs for a mesh of " +
+                                    std::to_string(u_.size()));
+    u_ = u;
+    v_ = v;
+}
+
 void ExplicitPile::compute_internal_force() {
     if (rod_chain_) {
         rod_chain_forces(mesh_.blocks[0], u_, f_int_);
@@ -161,7 +171,15 @@ void ExplicitPile::advance_velocity(double dt) {
     toe_reaction_ = support_reaction(c);
     // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
     // loop over all DOFs; the fixed ones are put back to rest after it.
-    for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    if (local_damping_ > 0.0) {
+        for (int i = 0; i < n; ++i) {
+            const double f = f_ext_[i] - f_int_[i];
+            const double damped = f - local_damping_ * std::abs(f) * (v_[i] > 0.0 ? 1.0 : v_[i] < 0.0 ? -1.0 : 0.0);
+            v_[i] = (c.keep[i] * v_[i] + damped) / c.scale[i];
+        }
+    } else {
+        for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    }
     for (int i : reaction_dofs_)
         if (fixed_[i]) v_[i] = 0.0;
     // Rigid head plate: the head DOFs share the momentum of the plate.

@@ -59,6 +59,11 @@ public:
     double dashpot_power(const std::vector<double>& v) const;  // W, rate of dissipation
     // Brings the pile to rest: zeroes every velocity (kinetic damping between blows).
     void stop() { std::fill(v_.begin(), v_.end(), 0.0); }
+    // Cundall's local damping (quasi-static stages, jacking): each DOF's out-of-balance
+    // force reduced by alpha of its size against its velocity; none at steady motion.
+    void set_local_damping(double alpha) { local_damping_ = alpha; }
+    // A checkpoint's state back: u_n and v_{n-1/2}, a value per DOF each.
+    void restore(const std::vector<double>& u, const std::vector<double>& v);
 
 private:
     // v_{n+1/2} = (keep v_{n-1/2} + f) / scale, with keep and scale = m / dt -+ c / 2.
@@ -85,6 +90,7 @@ private:
     bool rod_chain_ = false;            // one rod block, element e on nodes e, e + 1
     double head_mass_ = 0.0;
     double toe_reaction_ = 0.0;
+    double local_damping_ = 0.0;
 };
 
 }  // namespace pilempm::fem

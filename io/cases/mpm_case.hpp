@@ -70,7 +70,19 @@ struct MpmStageInput {
     double duration = 0.0;          // s (dynamic)
     long max_steps = 100000;        // quasi-static
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)
+    bool pile_driven = false;       // the pile's head driven at pile_velocity (jacking, load test)
+    double pile_velocity = 0.0;     // m/s, down positive (0: held)
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
+};
+
+// An FE pile in the soil (2D axisymmetric), coupled by penalty contact.
+struct MpmPileInput {
+    bool present = false;
+    PileInput pile;                 // geometry, steel, mesh (the axisymmetric wall)
+    double toe_elevation = 0.0;     // m, the toe's elevation in the soil's frame at the start
+    double friction = 0.0;          // mu = tan(delta) of the pile-soil interface
+    double penalty_factor = 4.0;    // k_n = factor x M V_p / h_p^2 (coupling/contact/penalty_contact.hpp)
+    bool self_weight = true;        // the pile's weight under the case's gravity
 };
 
 struct MpmCase : CaseFile {
@@ -91,6 +103,7 @@ struct MpmCase : CaseFile {
     bool k0_initial_stress = false;
     double surface = 0.0;           // elevation of the ground surface for K0, m
     std::vector<MpmStageInput> stages;
+    MpmPileInput pile;
     double snapshot_interval = 0.0; // s of simulated time (0: one snapshot per stage end)
     long checkpoint_every = 0;      // steps (0: only at stage ends)
     bool plots = true;

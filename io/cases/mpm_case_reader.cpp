@@ -134,6 +134,13 @@ MpmStageInput read_stage(MapReader m) {
         s.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
                                                              [](double x) { return x >= 0.0 && x < 1.0; }});
     }
+    if (!s.consolidation)
+        if (auto pm = m.optional_map("pile")) {
+            // The pile's head in this stage: driven down at a velocity (0 holds it), else free.
+            s.pile_driven = true;
+            s.pile_velocity = pm->number("velocity", {"a head velocity in m/s, down positive", [](double) { return true; }});
+            pm->finish();
+        }
     m.finish();
     return s;
 }
@@ -190,6 +197,21 @@ MpmCase read_mpm_case(const std::string& file) {
             m.finish();
             c.boundaries.push_back(b);
         }
+    if (auto pm = root.optional_map("pile")) {
+        // The FE pile in the soil: its wall meshed in (r, z), toe at toe_elevation.
+        if (c.dimension != 2 || !c.axisymmetric)
+            pm->fail("toe_elevation", "a pile in a 2D axisymmetric case (geometry: axisymmetric)", "another geometry");
+        auto& p = c.pile;
+        p.present = true;
+        p.toe_elevation = pm->number("toe_elevation", {"the toe's elevation in m", [](double) { return true; }});
+        p.friction = pm->number_or("friction", 0.0, non_negative("the interface's friction coefficient tan(delta)"));
+        p.penalty_factor = pm->number_or("penalty_factor", 4.0, in_open_range(0.0, 1000.0, "a penalty factor (k_n h_p^2 / (M V_p))"));
+        p.self_weight = pm->boolean_or("self_weight", true);
+        const int model_line = pm->line_of("model");
+        read_pile_section(std::move(*pm), p.pile, c, false);
+        if (p.pile.model != PileModel::Axisymmetric)
+            throw CaseError(file, model_line, "pile.model", "axisymmetric (the wall's surface is the contact)", "rod");
+    }
     // Stages first: loads name the stages they act in.
     for (auto m : root.maps("stages")) c.stages.push_back(read_stage(std::move(m)));
     std::vector<std::string> stage_names;

@@ -5,6 +5,9 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/conventions.hpp"
+#include "fem/mesh/axisymmetric_mesher.hpp"
+
 namespace pilempm::io {
 
 namespace {
@@ -86,6 +89,8 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         m.grid.water = true;
         m.grid.fields = 2;
     }
+    // The soil inside and outside an open pile's wall: a set of fields each (a cut).
+    if (c.pile.present) m.grid.fields *= 2;
     m.grid.allocate();
     m.shape = c.shape;
     m.axisymmetric = c.axisymmetric;
@@ -223,6 +228,22 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
     }
     run.settings.snapshot_interval = c.snapshot_interval;
     run.settings.checkpoint_every = c.checkpoint_every;
+    if (c.pile.present) {
+        if constexpr (D == 2) {
+            auto& pile = run.pile;
+            pile.present = true;
+            const fem::PileGeometry geometry = fem::make_pile_geometry(c.pile.pile.segments, c.pile.pile.taper_ratio);
+            pile.mesh = fem::mesh_axisymmetric_wall(geometry, c.pile.pile.element_size, c.pile.pile.radial_divisions,
+                                                    fem::default_pile_wall_geo());
+            pile.steel = c.pile.pile.steel;
+            pile.contact.friction = c.pile.friction;
+            pile.contact.penalty_factor = c.pile.penalty_factor;
+            pile.contact.ring = full_ring(1.0);
+            pile.frame.toe_elevation = c.pile.toe_elevation;
+            pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
+            for (const auto& st : c.stages) pile.heads.push_back({st.pile_driven, st.pile_velocity});
+        }
+    }
     return run;
 }
 

@@ -3,6 +3,7 @@
 // stress), the loads and stages the stage driver switches, and what the recorders watch.
 #include <vector>
 
+#include "coupling/contact/coupled_pile.hpp"
 #include "coupling/driver/stage_driver.hpp"
 #include "io/cases/mpm_case.hpp"
 
@@ -17,6 +18,18 @@ struct MpmRun {
     std::vector<int> probe_points;    // the material point nearest each output.probes entry
     std::vector<int> reaction_nodes;  // grid nodes with prescribed velocities
     std::vector<double> x0;           // initial point positions
+    // The FE pile (pile.present): its wall mesh and steel, the contact, its frame and
+    // weight, the head's control per stage.
+    struct Pile {
+        bool present = false;
+        fem::PileMesh mesh;
+        fem::LinearElasticSteel steel;
+        coupling::ContactSettings contact;
+        coupling::PileFrame frame;
+        double gravity = 0.0;
+        bool cut_fields = true;
+        std::vector<coupling::PileHeadControl> heads;
+    } pile;
 };
 
 // Throws std::runtime_error when the regions hold no material point.

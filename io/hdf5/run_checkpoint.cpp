@@ -6,6 +6,10 @@
 
 namespace pilempm::io {
 
+namespace {
+const std::string kBodyPrefix = "body_";  // the coupled body's arrays among the extras
+}  // namespace
+
 template <int D>
 void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particles<D>& p, const RunCheckpoint& run) {
     const auto& s = run.driver;
@@ -21,6 +25,7 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
     };
     CheckpointExtras extras;
     extras.arrays.emplace_back("snapshot_times", run.snapshot_times);
+    for (const auto& [name, values] : run.body) extras.arrays.emplace_back(kBodyPrefix + name, values);
     extras.tables.push_back(run.history);
     write_checkpoint<D>(file, p, run.solver.time, run.solver.steps, scalars, run.case_fingerprint, extras);
 }
@@ -46,8 +51,10 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     run.driver.initial_snapshot_written = scalar("initial_snapshot_written") != 0.0;
     run.solver.absorbed_energy = scalar("absorbed_energy");
     run.solver.external_work = scalar("external_work");
-    for (const auto& [name, values] : info.extras.arrays)
+    for (const auto& [name, values] : info.extras.arrays) {
         if (name == "snapshot_times") run.snapshot_times = values;
+        if (name.rfind(kBodyPrefix, 0) == 0) run.body.emplace_back(name.substr(kBodyPrefix.size()), values);
+    }
     bool have_history = false;
     for (const auto& t : info.extras.tables)
         if (t.name == "history") run.history = t, have_history = true;

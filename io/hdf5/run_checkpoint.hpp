@@ -4,6 +4,7 @@
 // snapshots already written. Resuming from it continues the run as if it had never stopped.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/table.hpp"
@@ -18,6 +19,8 @@ struct RunCheckpoint {
     mpm::SolverState solver;       // the clock and the energy ledger
     Table history;
     std::vector<double> snapshot_times;  // s, one per VTK file written
+    // The coupled body's state (the pile, its contact history): named arrays.
+    std::vector<std::pair<std::string, std::vector<double>>> body;
     std::string case_fingerprint;
 };
 

@@ -30,6 +30,7 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
     run.history = history;
     run.snapshot_times = vtk_.step_times();
     run.case_fingerprint = fingerprint_;
+    if (body_) run.body = body_->state();
     write_run_checkpoint<D>(checkpoint_path(), model.particles, run);
     staged_.keep_if_failed();
 }

@@ -30,6 +30,9 @@ public:
         vtk_.set_pore_water(water, std::move(friction_angle_deg));
     }
 
+    // The coupled body whose state each checkpoint carries (none: nullptr).
+    void set_body(const coupling::CoupledBody<D>* body) { body_ = body; }
+
     void snapshot(double time, const mpm::MpmModel<D>& model) override;
     void checkpoint(const coupling::DriverState& state, const mpm::MpmModel<D>& model,
                     const mpm::MpmSolver<D>& solver, const Table& history) override;
@@ -44,6 +47,7 @@ private:
     std::string fingerprint_;
     bool quiet_;
     std::unique_ptr<TerminalProgress> progress_;
+    const coupling::CoupledBody<D>* body_ = nullptr;
 };
 
 extern template class MpmRunOutput<2>;

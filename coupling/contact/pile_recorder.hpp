@@ -1,0 +1,20 @@
+#pragma once
+// The coupled pile's columns in a run's history: the head's settlement and the jack's
+// force, the soil's axial resistance on the pile split into outer shaft, inner shaft and
+// base (the toe's annulus), the points in contact and the deepest penetration.
+#include "coupling/contact/coupled_pile.hpp"
+#include "coupling/driver/recorders.hpp"
+
+namespace pilempm::coupling {
+
+class PileRecorder final : public Recorder<2> {
+public:
+    explicit PileRecorder(const CoupledPile& pile) : pile_(pile) {}
+    void add_columns(std::vector<std::string>& columns) const override;
+    void sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>& solver, std::vector<double>& row) const override;
+
+private:
+    const CoupledPile& pile_;
+};
+
+}  // namespace pilempm::coupling

@@ -1,0 +1,25 @@
+#pragma once
+// A body the soil's stages carry along (the FE pile): before each of the soil's steps it
+// puts its contact forces on the points and advances itself over the step; it may ask for
+// a shorter step; it comes to rest with the soil at a quasi-static stage's end.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mpm/solver/mpm_solver.hpp"
+
+namespace pilempm::coupling {
+
+template <int D>
+class CoupledBody {
+public:
+    virtual ~CoupledBody() = default;
+    virtual double stable_time_step(const mpm::MpmModel<D>& m, double soil_dt) const = 0;
+    virtual void before_step(mpm::MpmModel<D>& m, int stage, bool quasi_static, double dt) = 0;
+    virtual void come_to_rest() = 0;
+    // Its state for a checkpoint, and back: named arrays of doubles.
+    virtual std::vector<std::pair<std::string, std::vector<double>>> state() const = 0;
+    virtual void restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) = 0;
+};
+
+}  // namespace pilempm::coupling
