@@ -5,6 +5,9 @@
 //   that every staged run goes through and the coupled model extends.
 // - wave_equation/: the 1D fast path: SRD methods, Smith soil on the FE pile, driving to a
 //   steady set and the drivability study.
-// Pile-soil penalty contact and the coupled time stepping come here next.
+// - contact/: the FE pile in the MPM soil: point-to-segment penalty contact with Coulomb
+//   friction, the field cut along the pile's wall, the pile subcycled in each soil step.
+#include "coupling/contact/coupled_pile.hpp"
+#include "coupling/contact/pile_recorder.hpp"
 #include "coupling/driver/stage_driver.hpp"
 #include "coupling/wave_equation/drivability.hpp"

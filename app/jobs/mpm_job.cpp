@@ -20,7 +20,9 @@
 #include "io/writers/mpm_run_output.hpp"
 #include "io/writers/staged_directory.hpp"
 #include "mpm/analysis/granular_collapse.hpp"
+#include "io/writers/pile_contact_output.hpp"
 #include "io/writers/plots.hpp"
+#include "io/writers/vtk_pile_writer.hpp"
 #include "mpm/verification/mpm_checks.hpp"
 #include "mpm/verification/pore_water_checks.hpp"
 
@@ -138,6 +140,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     // The FE pile, coupled to the soil through the contact, carried by the soil's stages.
     std::unique_ptr<fem::ExplicitPile> pile;
     std::unique_ptr<coupling::CoupledPile> coupled;
+    std::unique_ptr<io::PileVtkSeries> pile_vtk;
     if constexpr (D == 2) {
         if (run.pile.present) {
             pile = std::make_unique<fem::ExplicitPile>(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
@@ -147,6 +150,19 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             driver.couple(coupled.get());
             output.set_body(coupled.get());
             driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled));
+            // The pile in ParaView over the soil (its mesh placed in the soil's frame), with
+            // its displacements, axial stress and contact forces.
+            fem::PileMesh placed = run.pile.mesh;
+            for (int i = 0; i < placed.num_nodes(); ++i) placed.coordinates[2 * i + 1] += run.pile.frame.toe_elevation;
+            pile_vtk = std::make_unique<io::PileVtkSeries>(staged.path() / "vtk", placed, "pile");
+            output.also_at_snapshots([&pile, &coupled, &pile_vtk](double time) {
+                std::vector<double> stress;
+                pile->axial_stress(stress);
+                const auto& force = coupled->contact().nodal_force();  // none before the first step
+                pile_vtk->write(time, pile->displacement(), pile->velocity(), stress,
+                                force.empty() ? std::vector<double>(pile->displacement().size(), 0.0) : force);
+            });
+            if (resume) pile_vtk->adopt_written_steps(restored.snapshot_times);
         }
     }
     if (resume) {
@@ -165,7 +181,11 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     const Table& history = driver.history();
     const long resumed_steps = resume ? restored.solver.steps : 0;
     output.finish();
+    if (pile_vtk) pile_vtk->finish();
     io::write_csv(staged.path() / "history.csv", history);
+    if constexpr (D == 2)
+        if (coupled)
+            for (const auto& t : io::pile_traction_profiles(*coupled)) io::write_csv(staged.path() / (t.name + ".csv"), t);
     if constexpr (D == 2) {
         // A collapse's final deposit, one row per grid column, for comparison with profiles.
         if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "granular_runout") !=
@@ -243,6 +263,10 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                             k.name.c_str(), k.computed, k.reference, k.tolerance);
     }
     io::write_json(staged.path() / "summary.json", summary);
+    if (c.pile.present && c.plots) {
+        std::string note;
+        if (!io::make_plots("plot_pile_installation.py", staged.path(), note) && !quiet) std::printf("  %s\n", note.c_str());
+    }
     if (poroelastic && c.plots) {
         std::string note;
         if (!io::make_plots("plot_poroelastic_wave.py", staged.path(), note) && !quiet) std::printf("  %s\n", note.c_str());

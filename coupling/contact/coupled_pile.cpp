@@ -1,6 +1,8 @@
 #include "coupling/contact/coupled_pile.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -15,7 +17,20 @@ CoupledPile::CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileF
     for (int i = 0; i < pile_.mesh().num_nodes(); ++i) surface_.inverse_mass[i] = 1.0 / mass[2 * i + 1];
 }
 
-void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage) {
+namespace {
+
+// The head's target velocity (down positive) at time t of a stage.
+double head_target(const std::vector<PileHeadControl>& heads, int stage, double t) {
+    const PileHeadControl& h = heads[stage];
+    if (h.rise_time <= 0.0 || t >= h.rise_time) return h.velocity_down;
+    const double from = stage > 0 && heads[stage - 1].driven ? heads[stage - 1].velocity_down : 0.0;
+    const double s = std::sin(0.5 * std::numbers::pi * std::max(t, 0.0) / h.rise_time);
+    return from + (h.velocity_down - from) * s * s;
+}
+
+}  // namespace
+
+void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time_in_stage) {
     place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);
     if (cut_fields_) {
         const int offset = m.grid.water ? 2 : 1;
@@ -29,10 +44,15 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage) {
     contact_.compute(m.particles, m.shape, surface_, dt, modulus_);
     contact_dt_ = contact_.totals().stable_time_step;
     const PileHeadControl head = stage < static_cast<int>(head_.size()) ? head_[stage] : PileHeadControl{};
-    pile_.set_local_damping(m.local_damping);  // the stage's, as the soil's
-    // Subcycles of the pile inside the soil's step, the contact force held over them. Local
-    // damping raises a force against the motion by 1 + alpha: the step shrinks by its root.
-    const double pile_dt = 0.95 * pile_.stable_time_step() / std::sqrt(1.0 + m.local_damping);
+    // The target over the step: its mid-time's.
+    const double target = head.driven ? head_target(head_, stage, time_in_stage + 0.5 * dt) : 0.0;
+    // A damped stage damps the pile too: stiffness-proportional, 5 % of critical in its
+    // first axial mode (fixed-free, omega_1 = pi c / 2L), more in the higher ones.
+    const double length = pile_.mesh().z(pile_.mesh().head_nodes.front());
+    const double omega1 = std::numbers::pi * pile_.steel().wave_speed() / (2.0 * length);
+    pile_.set_stiffness_damping(m.local_damping > 0.0 ? 2.0 * 0.05 / omega1 : 0.0);
+    // Subcycles of the pile inside the soil's step, the contact force held over them.
+    const double pile_dt = 0.95 * pile_.damped_stable_time_step();
     substeps_ = std::max(1, static_cast<int>(std::ceil(dt / pile_dt)));
     const double sub = dt / substeps_;
     const auto& f = contact_.nodal_force();
@@ -49,7 +69,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage) {
         pile_.advance_velocity(sub);
         if (head.driven) {
             // The jack sets the head plate's velocity: the impulse that takes is its force.
-            const double dv = -head.velocity_down - pile_.head_velocity();
+            const double dv = -target - pile_.head_velocity();
             pile_.add_head_velocity(dv);
             jack_impulse += pile_.head_mass() * dv;
         }
@@ -78,6 +98,8 @@ std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() co
             {"pile_velocity", pile_.velocity()},
             {"contact_tangential_force", contact_.tangential_force()},
             {"contact_segment", segment},
+            {"contact_overlap", contact_.overlap()},
+            {"contact_started", {contact_.started() ? 1.0 : 0.0}},
             {"pile_contact_impulse", {impulse_[0], impulse_[1]}},
             {"pile_head_force", {head_force_}},
             {"contact_time_step", {contact_dt_}}};
@@ -91,7 +113,8 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
     };
     pile_.restore(find("pile_displacement"), find("pile_velocity"));
     const auto& seg = find("contact_segment");
-    contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()));
+    contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()), find("contact_overlap"),
+                     find("contact_started").at(0) != 0.0);
     const auto& imp = find("pile_contact_impulse");
     impulse_ = {imp.at(0), imp.at(1)};
     head_force_ = find("pile_head_force").at(0);

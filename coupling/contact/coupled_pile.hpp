@@ -20,8 +20,11 @@
 namespace pilempm::coupling {
 
 struct PileHeadControl {
-    bool driven = false;        // false: the head is free
+    bool driven = false;         // false: the head is free
     double velocity_down = 0.0;  // m/s when driven (0: held)
+    // s: the velocity goes over from the last stage's (0 after a free head) to this one's
+    // as sin^2 over this time, so the jack does not ring the pile; 0: at once.
+    double rise_time = 0.0;
 };
 
 class CoupledPile final : public CoupledBody<2> {
@@ -35,8 +38,9 @@ public:
     // The head's control in each stage (index); stages beyond the list leave it free.
     void set_head_control(std::vector<PileHeadControl> per_stage) { head_ = std::move(per_stage); }
 
-    // Contact and the pile over dt (stage: whose head control), the soil's step left to the caller.
-    void advance(mpm::MpmModel<2>& m, double dt, int stage = 0);
+    // Contact and the pile over dt (stage: whose head control, time_in_stage: where in its
+    // rise), the soil's step left to the caller.
+    void advance(mpm::MpmModel<2>& m, double dt, int stage = 0, double time_in_stage = 1e300);
     // advance(), then the soil's step: the whole coupled step.
     void step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage = 0);
 
@@ -44,7 +48,9 @@ public:
     double stable_time_step(const mpm::MpmModel<2>&, double soil_dt) const override {
         return std::min(soil_dt, contact_dt_);
     }
-    void before_step(mpm::MpmModel<2>& m, int stage, bool, double dt) override { advance(m, dt, stage); }
+    void before_step(mpm::MpmModel<2>& m, int stage, bool quasi_static, double dt, double time_in_stage) override {
+        advance(m, dt, stage, quasi_static ? 1e300 : time_in_stage);
+    }
     void come_to_rest() override { pile_.stop(); }
     std::vector<std::pair<std::string, std::vector<double>>> state() const override;
     void restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) override;

@@ -82,7 +82,11 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     tangential_.resize(n, 0.0);
     segment_.resize(n, -1);
     normal_.assign(n, 0.0);
+    const bool first = !started_;
+    started_ = true;
+    if (settings_.ignore_initial_overlap) overlap_.resize(n, 0.0);
     nodal_force_.assign(s.x.size(), 0.0);
+    segment_force_.assign(2 * s.a.size(), 0.0);
     totals_ = {};
     std::fill(p.external_force.begin(), p.external_force.end(), 0.0);
     // The search margin: the largest half-extent of a point domain along an axis.
@@ -93,9 +97,12 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     }
     bin_segments(s, margin);
     const double mu = settings_.friction, ring = settings_.ring;
-    auto release = [&](long i) {
+    // Off contact: no force, no tangential history, and (unless still in its initial
+    // overlap) no overlap kept.
+    auto release = [&](long i, bool overlapping = false) {
         tangential_[i] = 0.0;
         segment_[i] = -1;
+        if (!overlap_.empty() && !overlapping) overlap_[i] = 0.0;
     };
     for (long i = 0; i < n; ++i) {
         const double* x = &p.x[2 * i];
@@ -152,6 +159,16 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
                 continue;
             }
         }
+        if (settings_.ignore_initial_overlap) {
+            // The overlap at the start is the zero gap; it shrinks as the point moves out.
+            if (first) overlap_[i] = std::min(0.0, gap);
+            overlap_[i] = std::min(0.0, std::max(overlap_[i], gap));
+            gap -= overlap_[i];
+            if (gap >= 0.0) {
+                release(i, true);
+                continue;
+            }
+        }
         const double kn = stiffness(nrm);
         totals_.stable_time_step = std::min(totals_.stable_time_step, 0.5 / std::sqrt(kn * compliance));
         const double fn = -kn * gap;
@@ -175,6 +192,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             nodal_force_[2 * s.b[k] + c] -= ring * xi * f[c];
             totals_.force_on_master[c] -= ring * f[c];
             totals_.force_by_side[static_cast<int>(s.side[k])][c] -= ring * f[c];
+            segment_force_[2 * k + c] -= ring * f[c];
         }
         ++totals_.points_in_contact;
         totals_.max_penetration = std::max(totals_.max_penetration, -gap);

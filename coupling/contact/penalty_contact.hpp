@@ -26,6 +26,9 @@ struct ContactSettings {
     double penalty_factor = 4.0;
     double tangential_ratio = 1.0;  // k_t / k_n
     double ring = 1.0;              // master force per point force: 2 pi axisymmetric, 1 plane strain
+    // A body wished in place: the overlaps found at the first step are taken as the points'
+    // zero gap, and forgotten as each point moves out of its overlap.
+    bool ignore_initial_overlap = false;
 };
 
 struct ContactTotals {
@@ -50,16 +53,23 @@ public:
 
     const ContactSettings& settings() const { return settings_; }
     const std::vector<double>& nodal_force() const { return nodal_force_; }
+    // The force on each segment (2 per segment, the master's measure), for traction profiles.
+    const std::vector<double>& segment_force() const { return segment_force_; }
     const ContactTotals& totals() const { return totals_; }
     // Per point: the tangential force it carries (N, along its segment's a -> b), its
     // segment (-1 off contact) and the normal force (N, >= 0), for output and restart.
     const std::vector<double>& tangential_force() const { return tangential_; }
     const std::vector<int>& segment() const { return segment_; }
     const std::vector<double>& normal_force() const { return normal_; }
-    // A checkpoint's history back: tangential forces and segments per point.
-    void restore(std::vector<double> tangential, std::vector<int> segment) {
+    // The initial overlap each point still has (m, <= 0), when ignored.
+    const std::vector<double>& overlap() const { return overlap_; }
+    bool started() const { return started_; }
+    // A checkpoint's history back: tangential forces, segments and overlaps per point.
+    void restore(std::vector<double> tangential, std::vector<int> segment, std::vector<double> overlap, bool started) {
         tangential_ = std::move(tangential);
         segment_ = std::move(segment);
+        overlap_ = std::move(overlap);
+        started_ = started;
     }
 
 private:
@@ -67,8 +77,10 @@ private:
     int nearest_segment(const ContactSurface& s, const double* x, double& xi) const;
 
     ContactSettings settings_;
-    std::vector<double> nodal_force_, tangential_, normal_;
+    std::vector<double> nodal_force_, segment_force_, tangential_, normal_;
     std::vector<int> segment_;
+    std::vector<double> overlap_;  // per point, when initial overlaps are ignored
+    bool started_ = false;         // the first step (and its overlaps) taken
     ContactTotals totals_;
     // Segments binned on a uniform grid over the surface's box, grown by the search margin.
     double bin_origin_[2] = {0.0, 0.0}, bin_size_ = 1.0;

@@ -15,7 +15,8 @@ class CoupledBody {
 public:
     virtual ~CoupledBody() = default;
     virtual double stable_time_step(const mpm::MpmModel<D>& m, double soil_dt) const = 0;
-    virtual void before_step(mpm::MpmModel<D>& m, int stage, bool quasi_static, double dt) = 0;
+    // time_in_stage: s since the stage began (0 throughout a quasi-static stage).
+    virtual void before_step(mpm::MpmModel<D>& m, int stage, bool quasi_static, double dt, double time_in_stage) = 0;
     virtual void come_to_rest() = 0;
     // Its state for a checkpoint, and back: named arrays of doubles.
     virtual std::vector<std::pair<std::string, std::vector<double>>> state() const = 0;

@@ -85,7 +85,9 @@ double StageDriver<D>::step_size() const {
 // The body first (its forces on the points, itself over the step), then the soil.
 template <int D>
 void StageDriver<D>::step(double dt, bool quasi_static) {
-    if (body_) body_->before_step(m_, state_.stage, quasi_static, dt);
+    if (body_)
+        body_->before_step(m_, state_.stage, quasi_static, dt,
+                           quasi_static ? 0.0 : solver_.time() - state_.stage_start_time);
     solver_.step(dt);
 }
 

@@ -101,13 +101,26 @@ void ExplicitPile::restore(const std::vector<double>& u, const std::vector<doubl
 }
 
 void ExplicitPile::compute_internal_force() {
-    if (rod_chain_) {
+    if (rod_chain_ && stiffness_damping_ == 0.0) {
         rod_chain_forces(mesh_.blocks[0], u_, f_int_);
         return;
     }
     std::fill(f_int_.begin(), f_int_.end(), 0.0);
     const int ndn = mesh_.dofs_per_node();
+    if (stiffness_damping_ > 0.0) {
+        // K (u + beta v): the elastic force and the stiffness-proportional damping together.
+        damped_u_.resize(u_.size());
+        for (std::size_t i = 0; i < u_.size(); ++i) damped_u_[i] = u_[i] + stiffness_damping_ * v_[i];
+        for (const auto& block : mesh_.blocks) add_block_forces(block, ndn, damped_u_, f_int_);
+        return;
+    }
     for (const auto& block : mesh_.blocks) add_block_forces(block, ndn, u_, f_int_);
+}
+
+double ExplicitPile::damped_stable_time_step() const {
+    // Central differences with damping beta K: omega dt <= 2 (sqrt(1 + xi^2) - xi), xi = beta omega / 2.
+    const double omega = 2.0 / ops_.stable_time_step, xi = 0.5 * stiffness_damping_ * omega;
+    return ops_.stable_time_step * (std::sqrt(1.0 + xi * xi) - xi);
 }
 
 void ExplicitPile::clear_external_force() { std::fill(f_ext_.begin(), f_ext_.end(), 0.0); }
@@ -171,15 +184,7 @@ void ExplicitPile::advance_velocity(double dt) {
     toe_reaction_ = support_reaction(c);
     // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
     // loop over all DOFs; the fixed ones are put back to rest after it.
-    if (local_damping_ > 0.0) {
-        for (int i = 0; i < n; ++i) {
-            const double f = f_ext_[i] - f_int_[i];
-            const double damped = f - local_damping_ * std::abs(f) * (v_[i] > 0.0 ? 1.0 : v_[i] < 0.0 ? -1.0 : 0.0);
-            v_[i] = (c.keep[i] * v_[i] + damped) / c.scale[i];
-        }
-    } else {
-        for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
-    }
+    for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
     for (int i : reaction_dofs_)
         if (fixed_[i]) v_[i] = 0.0;
     // Rigid head plate: the head DOFs share the momentum of the plate.

@@ -59,9 +59,13 @@ public:
     double dashpot_power(const std::vector<double>& v) const;  // W, rate of dissipation
     // Brings the pile to rest: zeroes every velocity (kinetic damping between blows).
     void stop() { std::fill(v_.begin(), v_.end(), 0.0); }
-    // Cundall's local damping (quasi-static stages, jacking): each DOF's out-of-balance
-    // force reduced by alpha of its size against its velocity; none at steady motion.
-    void set_local_damping(double alpha) { local_damping_ = alpha; }
+    // Stiffness-proportional (Rayleigh) damping beta K v, for damped stages (jacking, a nil
+    // step): it damps the pile's vibration, strongest at high frequency, and leaves rigid
+    // motion alone, so a pile pushed at a steady speed feels no drag from it. 0: none.
+    void set_stiffness_damping(double beta) { stiffness_damping_ = beta; }
+    double stiffness_damping() const { return stiffness_damping_; }
+    // The stable step with that damping (the undamped one when beta = 0).
+    double damped_stable_time_step() const;
     // A checkpoint's state back: u_n and v_{n-1/2}, a value per DOF each.
     void restore(const std::vector<double>& u, const std::vector<double>& v);
 
@@ -90,7 +94,8 @@ private:
     bool rod_chain_ = false;            // one rod block, element e on nodes e, e + 1
     double head_mass_ = 0.0;
     double toe_reaction_ = 0.0;
-    double local_damping_ = 0.0;
+    double stiffness_damping_ = 0.0;  // beta, s
+    std::vector<double> damped_u_;     // u + beta v (scratch)
 };
 
 }  // namespace pilempm::fem

@@ -72,6 +72,7 @@ struct MpmStageInput {
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)
     bool pile_driven = false;       // the pile's head driven at pile_velocity (jacking, load test)
     double pile_velocity = 0.0;     // m/s, down positive (0: held)
+    double pile_rise_time = 0.0;    // s over which the velocity changes from the last stage's
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
 };
 
@@ -83,6 +84,7 @@ struct MpmPileInput {
     double friction = 0.0;          // mu = tan(delta) of the pile-soil interface
     double penalty_factor = 4.0;    // k_n = factor x M V_p / h_p^2 (coupling/contact/penalty_contact.hpp)
     bool self_weight = true;        // the pile's weight under the case's gravity
+    bool wished_in_place = false;   // starts embedded: the soil in its wall removed, overlaps ignored
 };
 
 struct MpmCase : CaseFile {

@@ -139,6 +139,7 @@ MpmStageInput read_stage(MapReader m) {
             // The pile's head in this stage: driven down at a velocity (0 holds it), else free.
             s.pile_driven = true;
             s.pile_velocity = pm->number("velocity", {"a head velocity in m/s, down positive", [](double) { return true; }});
+            s.pile_rise_time = pm->number_or("rise_time", 0.0, non_negative("a rise time in s"));
             pm->finish();
         }
     m.finish();
@@ -207,6 +208,8 @@ MpmCase read_mpm_case(const std::string& file) {
         p.friction = pm->number_or("friction", 0.0, non_negative("the interface's friction coefficient tan(delta)"));
         p.penalty_factor = pm->number_or("penalty_factor", 4.0, in_open_range(0.0, 1000.0, "a penalty factor (k_n h_p^2 / (M V_p))"));
         p.self_weight = pm->boolean_or("self_weight", true);
+        p.wished_in_place = pm->boolean_or("wished_in_place", false);
+        c.lines["pile.toe_elevation"] = pm->line_of("toe_elevation");
         const int model_line = pm->line_of("model");
         read_pile_section(std::move(*pm), p.pile, c, false);
         if (p.pile.model != PileModel::Axisymmetric)

@@ -7,6 +7,7 @@
 
 #include "core/conventions.hpp"
 #include "fem/mesh/axisymmetric_mesher.hpp"
+#include "io/yaml/case_error.hpp"
 
 namespace pilempm::io {
 
@@ -125,6 +126,29 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         for (std::size_t i = first; i < m.particles.size(); ++i) m.particles.porosity[i] = dr.porosity;
     }
     if (m.particles.size() == 0) throw std::runtime_error("the regions hold no material points");
+    if (c.pile.present) {
+        // The soil where the pile's steel is: removed (wished in place), else an error.
+        const fem::PileGeometry g = fem::make_pile_geometry(c.pile.pile.segments, c.pile.pile.taper_ratio);
+        // Overlapping: a point's domain reaches into the steel (its centre in it: removed).
+        std::vector<char> keep(m.particles.size(), 1);
+        std::size_t overlapping = 0;
+        const auto& p0 = m.particles;
+        for (std::size_t i = 0; i < p0.size(); ++i) {
+            const double hr = 0.5 * p0.domain0[D * D * i], hz = 0.5 * p0.domain0[D * D * i + D * (D - 1) + D - 1];
+            const double r = p0.x[D * i], z = p0.x[D * i + D - 1] - c.pile.toe_elevation;
+            const double touch = 1e-9 * hz;  // a domain only touching the steel does not overlap it
+            if (z + hz <= touch || z - hz >= g.length() - touch) continue;
+            const double zc = std::clamp(z, 0.0, g.length());
+            if (r + hr <= g.inner_radius_at(zc) + touch || r - hr >= g.outer_radius_at(zc) - touch) continue;
+            ++overlapping;
+            if (z >= 0.0 && z <= g.length() && r >= g.inner_radius_at(z) && r <= g.outer_radius_at(z)) keep[i] = 0;
+        }
+        if (overlapping > 0 && !c.pile.wished_in_place)
+            throw CaseError(c.file, c.line_of("pile.toe_elevation"), "pile.toe_elevation",
+                            "a pile that starts clear of the soil, or wished_in_place: true",
+                            std::to_string(overlapping) + " material points overlapping its wall");
+        m.particles.keep_only(keep);
+    }
     for (const auto& b : c.boundaries) {
         // Absorbing boundaries take the first material's moduli (a pressure-dependent model
         // states them at its reference pressure).
@@ -239,9 +263,10 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.contact.friction = c.pile.friction;
             pile.contact.penalty_factor = c.pile.penalty_factor;
             pile.contact.ring = full_ring(1.0);
+            pile.contact.ignore_initial_overlap = c.pile.wished_in_place;
             pile.frame.toe_elevation = c.pile.toe_elevation;
             pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
-            for (const auto& st : c.stages) pile.heads.push_back({st.pile_driven, st.pile_velocity});
+            for (const auto& st : c.stages) pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_rise_time});
         }
     }
     return run;

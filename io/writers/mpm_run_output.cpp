@@ -19,6 +19,7 @@ MpmRunOutput<D>::MpmRunOutput(StagedDirectory& staged, std::vector<std::string> 
 template <int D>
 void MpmRunOutput<D>::snapshot(double time, const mpm::MpmModel<D>& model) {
     vtk_.write(time, model.particles);
+    if (also_) also_(time);
 }
 
 template <int D>

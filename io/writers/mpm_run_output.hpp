@@ -3,6 +3,7 @@
 // checkpoint (the whole run state, see run_checkpoint.hpp), progress on a terminal and a
 // line per finished stage. The stage driver calls it; it decides nothing about the run.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ public:
 
     // The coupled body whose state each checkpoint carries (none: nullptr).
     void set_body(const coupling::CoupledBody<D>* body) { body_ = body; }
+    // Called at each snapshot after the particles' (the pile's own VTK series).
+    void also_at_snapshots(std::function<void(double)> write) { also_ = std::move(write); }
 
     void snapshot(double time, const mpm::MpmModel<D>& model) override;
     void checkpoint(const coupling::DriverState& state, const mpm::MpmModel<D>& model,
@@ -48,6 +51,7 @@ private:
     bool quiet_;
     std::unique_ptr<TerminalProgress> progress_;
     const coupling::CoupledBody<D>* body_ = nullptr;
+    std::function<void(double)> also_;
 };
 
 extern template class MpmRunOutput<2>;

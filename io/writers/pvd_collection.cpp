@@ -60,6 +60,16 @@ void PvdCollection::add(double time, std::string file) {
     steps_.push_back({time, std::move(file)});
 }
 
+void PvdCollection::adopt_written(const std::vector<double>& times) {
+    if (!steps_.empty()) throw std::logic_error(owner_ + ": adopting written steps after a write");
+    for (double t : times) {
+        const std::string file = next_step_file();
+        if (!std::filesystem::exists(dir_ / file))
+            throw std::runtime_error(owner_ + ": cannot resume the VTK series: " + (dir_ / file).string() + " is missing");
+        add(t, file);
+    }
+}
+
 std::vector<double> PvdCollection::times() const {
     std::vector<double> out;
     for (const Step& s : steps_) out.push_back(s.time);

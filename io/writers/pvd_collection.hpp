@@ -25,6 +25,9 @@ public:
     std::string next_step_file() const;
     // Records a written step; `file` is relative to dir, as the .pvd lists it.
     void add(double time, std::string file);
+    // A resumed run: the steps an interrupted one wrote, at these times, taken back into
+    // an empty series (each file must be there; std::runtime_error names the missing one).
+    void adopt_written(const std::vector<double>& times);
     std::size_t size() const { return steps_.size(); }
     std::vector<double> times() const;
 

@@ -312,14 +312,7 @@ std::vector<double> ParticleVtkSeries<D>::step_times() const {
 
 template <int D>
 void ParticleVtkSeries<D>::adopt_written_steps(const std::vector<double>& times) {
-    if (impl_->pvd.size() > 0) throw std::logic_error("ParticleVtkSeries: adopt_written_steps after write()");
-    for (double t : times) {
-        const std::string file = impl_->pvd.next_step_file();
-        if (!fs::exists(impl_->pvd.dir() / file))
-            throw std::runtime_error("cannot resume the VTK series: " + (impl_->pvd.dir() / file).string() +
-                                     " is missing");
-        impl_->pvd.add(t, file);
-    }
+    impl_->pvd.adopt_written(times);
 }
 
 template <int D>

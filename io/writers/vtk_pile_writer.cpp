@@ -4,6 +4,7 @@
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkInformation.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -56,7 +57,8 @@ struct PileVtkSeries::Impl {
     std::size_t num_elements = 0;
 
     vtkNew<vtkUnstructuredGrid> grid;
-    vtkNew<vtkDoubleArray> displacement, velocity, stress, time_value;
+    vtkNew<vtkDoubleArray> displacement, velocity, stress, time_value, contact;
+    bool contact_added = false;
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
 
     void build_geometry(const fem::PileMesh& mesh);
@@ -163,6 +165,10 @@ void PileVtkSeries::write(double time, const std::vector<double>& displacement,
     m.velocity->Modified();
     m.stress->Modified();
     m.time_value->Modified();
+    // The points never change: drop the range VTK caches on them after a write, so every
+    // file reads the same whether it is a series' first (a resumed run's) or not.
+    m.grid->GetPoints()->GetData()->GetInformation()->Clear();
+    m.grid->GetPoints()->Modified();
     m.grid->Modified();
 
     const std::string file = m.pvd.next_step_file();
@@ -172,6 +178,25 @@ void PileVtkSeries::write(double time, const std::vector<double>& displacement,
         throw std::runtime_error("PileVtkSeries: cannot write " + path.string());
     m.pvd.add(time, file);
 }
+
+void PileVtkSeries::write(double time, const std::vector<double>& displacement, const std::vector<double>& velocity,
+                          const std::vector<double>& axial_stress, const std::vector<double>& contact_force) {
+    if (!impl_) throw std::logic_error("PileVtkSeries::write on a moved-from series");
+    Impl& m = *impl_;
+    if (m.dim != 2 || contact_force.size() != m.num_dofs)
+        throw std::invalid_argument("PileVtkSeries::write: contact forces need an axisymmetric mesh and " +
+                                    std::to_string(m.num_dofs) + " values");
+    if (!m.contact_added) {
+        m.grid->GetPointData()->AddArray(init_array(m.contact, "contact_force_N", 3, m.num_nodes));
+        m.contact_added = true;
+    }
+    for (vtkIdType n = 0; n < m.num_nodes; ++n)
+        m.contact->SetTuple3(n, contact_force[2 * n], contact_force[2 * n + 1], 0.0);
+    m.contact->Modified();
+    write(time, displacement, velocity, axial_stress);
+}
+
+void PileVtkSeries::adopt_written_steps(const std::vector<double>& times) { impl_->pvd.adopt_written(times); }
 
 void PileVtkSeries::finish() {
     if (impl_) impl_->pvd.finish();  // nothing to do when moved-from

@@ -29,6 +29,14 @@ public:
     void write(double time, const std::vector<double>& displacement,
                const std::vector<double>& velocity, const std::vector<double>& axial_stress);
 
+    // The same with each node's contact force (2 per node: radial and axial, N), for a
+    // pile in MPM soil; the array is written as point data "contact_force_N".
+    void write(double time, const std::vector<double>& displacement, const std::vector<double>& velocity,
+               const std::vector<double>& axial_stress, const std::vector<double>& contact_force);
+
+    // A resumed run: the steps the interrupted run wrote, at these times, stay in the series.
+    void adopt_written_steps(const std::vector<double>& times);
+
     // Writes the .pvd listing all steps with their times; idempotent. Steps written after
     // a finish() are picked up by the next finish().
     void finish();

@@ -45,6 +45,33 @@ void Particles<D>::resize_state(int stride) {
     state.assign(size() * static_cast<std::size_t>(stride), 0.0);
 }
 
+namespace {
+
+// Compacts an array of `per` values per point to the kept points.
+template <class T>
+void compact(std::vector<T>& a, std::size_t per, const std::vector<char>& keep) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < keep.size(); ++i) {
+        if (!keep[i]) continue;
+        for (std::size_t k = 0; k < per; ++k) a[out * per + k] = a[i * per + k];
+        ++out;
+    }
+    a.resize(out * per);
+}
+
+}  // namespace
+
+template <int D>
+void Particles<D>::keep_only(const std::vector<char>& keep) {
+    for (auto* a : {&x, &v, &external_force, &w}) compact(*a, D, keep);
+    for (auto* a : {&C, &F, &domain0}) compact(*a, D * D, keep);
+    for (auto* a : {&mass, &volume, &volume0, &porosity, &pore_pressure}) compact(*a, 1, keep);
+    for (auto* a : {&stress, &strain, &dstrain}) compact(*a, 6, keep);
+    compact(material, 1, keep);
+    compact(field, 1, keep);
+    if (state_stride > 0) compact(state, static_cast<std::size_t>(state_stride), keep);
+}
+
 template struct Particles<2>;
 template struct Particles<3>;
 

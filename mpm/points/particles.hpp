@@ -39,6 +39,8 @@ struct Particles {
     void add(const double* position, double point_mass, double point_volume, const double* lengths,
              int material_id);
     void resize_state(int stride);
+    // Keeps the points with keep[i] != 0, in order (the others are removed from every array).
+    void keep_only(const std::vector<char>& keep);
 };
 
 }  // namespace pilempm::mpm

@@ -11,6 +11,7 @@
 #include "io/cases/mpm_case.hpp"
 #include "io/cases/mpm_run_builder.hpp"
 #include "io/yaml/case_error.hpp"
+#include "tests/unit/io/cases/case_text.hpp"
 
 namespace fs = std::filesystem;
 namespace pio = pilempm::io;
@@ -24,31 +25,10 @@ std::string terzaghi() {
     return s.str();
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) text.replace(at, from.size(), to);
-    return text;
-}
+using case_text::replaced;
+using case_text::write;
 
-fs::path write(const std::string& text, const std::string& name) {
-    const fs::path file = fs::temp_directory_path() / ("pilempm-pore-" + name + "-" + std::to_string(::getpid()) + ".yaml");
-    std::ofstream(file) << text;
-    return file;
-}
-
-// The message of the CaseError reading `text` throws ("" if none).
-std::string error_of(const std::string& text, const std::string& name) {
-    const fs::path file = write(text, name);
-    std::string message;
-    try {
-        (void)pio::read_mpm_case(file.string());
-    } catch (const pio::CaseError& e) {
-        message = e.what();
-    }
-    fs::remove(file);
-    return message;
-}
+std::string error_of(const std::string& text, const std::string& name) { return case_text::mpm_error_of(text, name); }
 
 const char* kPermeability = "drainage: coupled, porosity: 0.4, hydraulic_conductivity: 1.0e-3";
 

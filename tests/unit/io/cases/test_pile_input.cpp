@@ -1,0 +1,88 @@
+// The pile keys of MPM cases: a pile needs an axisymmetric case and the wall model; one
+// starting inside the soil needs wished_in_place, which removes the soil in its wall; the
+// stages' head control is read; a valid case builds the wall mesh, the contact with the
+// whole ring's factor and a grid with a field each side of the wall.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "io/cases/mpm_case.hpp"
+#include "io/cases/mpm_run_builder.hpp"
+#include "io/yaml/case_error.hpp"
+#include "tests/unit/io/cases/case_text.hpp"
+
+namespace fs = std::filesystem;
+namespace pio = pilempm::io;
+
+namespace {
+
+std::string jacking() { return case_text::shipped("cases/jacking/jacked-open-pile-small.yaml"); }
+
+using case_text::replaced;
+using case_text::write;
+
+std::string error_of(const std::string& text, const std::string& name) { return case_text::mpm_error_of(text, name, true); }
+
+}  // namespace
+
+TEST(PileInput, APileNeedsAnAxisymmetricCase) {
+    const auto msg = error_of(replaced(jacking(), "geometry: axisymmetric", "geometry: plane_strain"), "plane");
+    EXPECT_NE(msg.find("pile"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("axisymmetric"), std::string::npos) << msg;
+}
+
+TEST(PileInput, ARodHasNoSurfaceToTouch) {
+    const auto msg = error_of(replaced(jacking(), "  model: axisymmetric\n", "  model: rod\n"), "rod");
+    EXPECT_NE(msg.find("pile.model"), std::string::npos) << msg;
+}
+
+TEST(PileInput, APileStartingInTheSoilMustBeWishedInPlace) {
+    const std::string embedded = replaced(jacking(), "toe_elevation: 6.0", "toe_elevation: 5.0");
+    const auto msg = error_of(embedded, "embedded");
+    EXPECT_NE(msg.find("pile.toe_elevation"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("wished_in_place"), std::string::npos) << msg;
+    // With it the case builds: the points whose centres lie in the steel go (none here:
+    // the 20 mm wall lies between the centres 5 cm apart), the overlaps are ignored.
+    const fs::path file = write(replaced(embedded, "  friction: 0.4", "  wished_in_place: true\n  friction: 0.4"), "wished");
+    const auto run = pio::build_mpm_run<2>(pio::read_mpm_case(file.string()));
+    fs::remove(file);
+    const auto& p = run.model.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r = p.x[2 * i], z = p.x[2 * i + 1];
+        EXPECT_FALSE(r >= 0.18 && r <= 0.2 && z >= 5.0 && z <= 6.0) << "a point left in the wall at " << r << ", " << z;
+    }
+    // A wall through the points' centres (r 0.17 to 0.18) takes the column at r = 0.175.
+    const std::string thick = replaced(replaced(embedded, "  friction: 0.4", "  wished_in_place: true\n  friction: 0.4"),
+                                       "outer_diameter: 0.4, wall_thickness: 0.02", "outer_diameter: 0.36, wall_thickness: 0.01");
+    const fs::path thick_file = write(thick, "thick");
+    const auto cut = pio::build_mpm_run<2>(pio::read_mpm_case(thick_file.string()));
+    fs::remove(thick_file);
+    EXPECT_EQ(p.size() - cut.model.particles.size(), 20u);  // 1 m below the surface, points 5 cm apart
+    EXPECT_TRUE(run.pile.contact.ignore_initial_overlap);
+}
+
+TEST(PileInput, AValidCaseBuildsTheWallTheContactAndAFieldEachSide) {
+    const fs::path file = write(jacking(), "valid");
+    const auto c = pio::read_mpm_case(file.string());
+    fs::remove(file);
+    ASSERT_TRUE(c.pile.present);
+    EXPECT_DOUBLE_EQ(c.pile.toe_elevation, 6.0);
+    EXPECT_DOUBLE_EQ(c.pile.friction, 0.4);
+    ASSERT_EQ(c.stages.size(), 2u);
+    EXPECT_TRUE(c.stages[0].pile_driven);
+    EXPECT_DOUBLE_EQ(c.stages[0].pile_velocity, 0.5);
+    const auto run = pio::build_mpm_run<2>(c);
+    EXPECT_TRUE(run.pile.present);
+    EXPECT_EQ(run.pile.mesh.dim, 2);
+    EXPECT_NEAR(run.pile.contact.ring, 2.0 * std::numbers::pi, 1e-15);
+    EXPECT_EQ(run.model.grid.fields, 2);
+    ASSERT_EQ(run.pile.heads.size(), 2u);
+    EXPECT_DOUBLE_EQ(run.pile.heads[1].velocity_down, 0.0);
+    EXPECT_TRUE(run.pile.heads[1].driven);
+    EXPECT_NEAR(run.pile.gravity, 9.81, 1e-12);
+}
