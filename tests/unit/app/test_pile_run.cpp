@@ -1,13 +1,16 @@
-// A pile jacked into the soil and held, run as a user runs it: once held, the jack's force
+// Piles in the soil run as a user runs them. A pile jacked in and held: the jack's force
 // plus the pile's weight is the soil's resistance (outer shaft + inner shaft + base) within
 // 0.5 % (the pile at rest, Newton); the penetration stays below 1 % of a cell at every
 // step; the traction profiles, the pile's VTK series and the plots' inputs are written.
+// A pile wished in place in soil at K0, after the nil step: the normal traction on its
+// outer shaft is the soil's horizontal stress K0 rho g z, converging on two grids.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -21,7 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// history.csv as columns by name.
+// A CSV file as columns by name.
 std::map<std::string, std::vector<double>> read_history(const fs::path& file) {
     std::ifstream in(file);
     std::string line;
@@ -38,15 +41,58 @@ std::map<std::string, std::vector<double>> read_history(const fs::path& file) {
     return columns;
 }
 
+int run_case(const std::string& case_file, const fs::path& out) {
+    fs::remove_all(out);
+    const std::string command = std::string(PILEMPM_EXECUTABLE) + " run " + case_file + " --out " + out.string() + " --quiet";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The mean of sigma_n / (K0 rho g z) - 1 on the outer shaft between 0.3 and 1.7 m deep
+// (clear of the ground surface and of the toe 2 m down).
+double k0_shaft_error(const fs::path& out) {
+    auto t = read_history(out / "pile_tractions_outer.csv");
+    const double k0 = 0.3 / 0.7, surface = 3.0;
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t k = 0; k < t["elevation_m"].size(); ++k) {
+        const double depth = surface - t["elevation_m"][k];
+        if (depth < 0.3 || depth > 1.7) continue;
+        sum += t["normal_traction_compression_Pa"][k] / (k0 * 1900.0 * 9.81 * depth) - 1.0;
+        ++n;
+    }
+    EXPECT_GT(n, 10);
+    return n ? sum / n : 1e9;
+}
+
 }  // namespace
+
+TEST(PileRun, AWishedInPlacePileAtRestFeelsK0OnItsShaft) {
+    const std::string fine = std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/wished-in-place-k0.yaml";
+    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-k0-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    // The same case on cells of 0.1 m (the shipped one has 0.05 m).
+    std::ifstream in(fine);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    yaml.replace(yaml.find("cells: [40, 90]"), 15, "cells: [20, 45]");
+    const fs::path coarse = dir / "coarse.yaml";
+    std::ofstream(coarse) << yaml;
+    ASSERT_EQ(run_case(coarse.string(), dir / "coarse"), 0);
+    ASSERT_EQ(run_case(fine, dir / "fine"), 0);
+    const double e_coarse = k0_shaft_error(dir / "coarse"), e_fine = k0_shaft_error(dir / "fine");
+    std::printf("  outer shaft sigma_n against K0 rho g z: %+.2f %% (0.1 m cells), %+.2f %% (0.05 m)\n", 100.0 * e_coarse,
+                100.0 * e_fine);
+    EXPECT_LT(std::abs(e_fine), 0.05);
+    EXPECT_LT(std::abs(e_coarse), 0.09);
+    EXPECT_LT(std::abs(e_fine), 0.7 * std::abs(e_coarse));  // converging
+    fs::remove_all(dir);
+}
 
 TEST(PileRun, AHeldPileCarriesItsJackAndWeightOnTheSoil) {
     const fs::path out = fs::temp_directory_path() / ("pilempm-pile-run-" + std::to_string(::getpid()));
-    fs::remove_all(out);
-    const std::string command = std::string(PILEMPM_EXECUTABLE) + " run " + PILEMPM_SOURCE_DIR +
-                                "/cases/jacking/jacked-open-pile-tiny.yaml --out " + out.string() + " --quiet";
-    const int status = std::system(command.c_str());
-    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
+    ASSERT_EQ(run_case(std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/jacked-open-pile-tiny.yaml", out), 0);
     auto h = read_history(out / "history.csv");
     ASSERT_FALSE(h["time_s"].empty());
     // The pile's weight: steel 7850 kg/m^3, the 0.4 m tube with a 20 mm wall, 0.6 m long.
