@@ -19,13 +19,20 @@ CoupledPile::CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileF
 
 namespace {
 
-// The head's target velocity (down positive) at time t of a stage.
+// The head's target at time t of a stage: its velocity (down positive) or its force
+// (compression positive), risen from the last stage's.
 double head_target(const std::vector<PileHeadControl>& heads, int stage, double t) {
     const PileHeadControl& h = heads[stage];
-    if (h.rise_time <= 0.0 || t >= h.rise_time) return h.velocity_down;
-    const double from = stage > 0 && heads[stage - 1].driven ? heads[stage - 1].velocity_down : 0.0;
+    const double to = h.driven ? h.velocity_down : h.force;
+    if (h.rise_time <= 0.0 || t >= h.rise_time) return to;
+    double from = 0.0;
+    if (stage > 0) {
+        const PileHeadControl& last = heads[stage - 1];
+        if (h.driven && last.driven) from = last.velocity_down;
+        if (h.loaded && last.loaded) from = last.force;
+    }
     const double s = std::sin(0.5 * std::numbers::pi * std::max(t, 0.0) / h.rise_time);
-    return from + (h.velocity_down - from) * s * s;
+    return from + (to - from) * s * s;
 }
 
 }  // namespace
@@ -45,7 +52,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     contact_dt_ = contact_.totals().stable_time_step;
     const PileHeadControl head = stage < static_cast<int>(head_.size()) ? head_[stage] : PileHeadControl{};
     // The target over the step: its mid-time's.
-    const double target = head.driven ? head_target(head_, stage, time_in_stage + 0.5 * dt) : 0.0;
+    const double target = head.driven || head.loaded ? head_target(head_, stage, time_in_stage + 0.5 * dt) : 0.0;
     // A damped stage damps the pile too: stiffness-proportional, 5 % of critical in its
     // first axial mode (fixed-free, omega_1 = pi c / 2L), more in the higher ones.
     const double length = pile_.mesh().z(pile_.mesh().head_nodes.front());
@@ -66,6 +73,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
             pile_.add_nodal_force(2 * i, f[2 * i]);
             pile_.add_nodal_force(2 * i + 1, f[2 * i + 1] - mass[2 * i + 1] * gravity_);
         }
+        if (head.loaded) pile_.add_head_force(-target);
         pile_.advance_velocity(sub);
         if (head.driven) {
             // The jack sets the head plate's velocity: the impulse that takes is its force.
@@ -75,7 +83,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         }
         pile_.advance_displacement(sub);
     }
-    head_force_ = -jack_impulse / dt;
+    head_force_ = head.loaded ? target : -jack_impulse / dt;
     for (int c = 0; c < 2; ++c) impulse_[c] += contact_.totals().force_on_master[c] * dt;
 }
 

@@ -3,8 +3,9 @@
 // and the pile at t_n, then the pile subcycled over the step (its stable step is smaller)
 // with those forces held, then the soil's step with the same forces on its points. The
 // interface impulse f dt is therefore the same on both sides: pile + soil momentum is
-// conserved to round-off. Per stage the head is free, or driven at a set velocity (jacking,
-// a displacement-controlled load test; 0 holds it), the jack's force recorded.
+// conserved to round-off. Per stage the head is free, driven at a set velocity (jacking, a
+// displacement-controlled load test; 0 holds it; the jack's force recorded) or pushed by a
+// set force (a maintained load test).
 #include <algorithm>
 #include <array>
 #include <string>
@@ -20,10 +21,12 @@
 namespace pilempm::coupling {
 
 struct PileHeadControl {
-    bool driven = false;         // false: the head is free
-    double velocity_down = 0.0;  // m/s when driven (0: held)
-    // s: the velocity goes over from the last stage's (0 after a free head) to this one's
-    // as sin^2 over this time, so the jack does not ring the pile; 0: at once.
+    bool driven = false;         // the head driven at velocity_down (0: held)
+    double velocity_down = 0.0;  // m/s
+    bool loaded = false;         // the head pushed down by force (a maintained load test)
+    double force = 0.0;          // N, compression positive
+    // s: the velocity (or force) goes over from the last stage's (0 when it had none) to
+    // this one's as sin^2 over this time, so the jack does not ring the pile; 0: at once.
     double rise_time = 0.0;
 };
 

@@ -72,7 +72,9 @@ struct MpmStageInput {
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)
     bool pile_driven = false;       // the pile's head driven at pile_velocity (jacking, load test)
     double pile_velocity = 0.0;     // m/s, down positive (0: held)
-    double pile_rise_time = 0.0;    // s over which the velocity changes from the last stage's
+    bool pile_loaded = false;       // the pile's head pushed by pile_force (a maintained load)
+    double pile_force = 0.0;        // N, compression positive
+    double pile_rise_time = 0.0;    // s over which the velocity or force changes from the last stage's
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
 };
 

@@ -136,9 +136,17 @@ MpmStageInput read_stage(MapReader m) {
     }
     if (!s.consolidation)
         if (auto pm = m.optional_map("pile")) {
-            // The pile's head in this stage: driven down at a velocity (0 holds it), else free.
-            s.pile_driven = true;
-            s.pile_velocity = pm->number("velocity", {"a head velocity in m/s, down positive", [](double) { return true; }});
+            // The pile's head in this stage: driven down at a velocity (0 holds it), or pushed
+            // by a force; else free.
+            if (pm->has("velocity") == pm->has("force"))
+                pm->fail("velocity", "one of velocity (m/s, down positive) or force (N, compression positive)",
+                         pm->has("velocity") ? "both" : "neither");
+            s.pile_driven = pm->has("velocity");
+            s.pile_loaded = pm->has("force");
+            if (s.pile_driven)
+                s.pile_velocity = pm->number("velocity", {"a head velocity in m/s, down positive", [](double) { return true; }});
+            else
+                s.pile_force = pm->number("force", {"a head force in N, compression positive", [](double) { return true; }});
             s.pile_rise_time = pm->number_or("rise_time", 0.0, non_negative("a rise time in s"));
             pm->finish();
         }

@@ -266,7 +266,8 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.contact.ignore_initial_overlap = c.pile.wished_in_place;
             pile.frame.toe_elevation = c.pile.toe_elevation;
             pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
-            for (const auto& st : c.stages) pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_rise_time});
+            for (const auto& st : c.stages)
+                pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_loaded, st.pile_force, st.pile_rise_time});
         }
     }
     return run;

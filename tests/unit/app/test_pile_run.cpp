@@ -3,7 +3,9 @@
 // 0.5 % (the pile at rest, Newton); the penetration stays below 1 % of a cell at every
 // step; the traction profiles, the pile's VTK series and the plots' inputs are written.
 // A pile wished in place in soil at K0, after the nil step: the normal traction on its
-// outer shaft is the soil's horizontal stress K0 rho g z, converging on two grids.
+// outer shaft is the soil's horizontal stress K0 rho g z, converging on two grids. A
+// maintained load after jacking (force control, quasi-static): the soil carries the load
+// plus the weight within 0.5 %.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -87,6 +89,27 @@ TEST(PileRun, AWishedInPlacePileAtRestFeelsK0OnItsShaft) {
     EXPECT_LT(std::abs(e_fine), 0.05);
     EXPECT_LT(std::abs(e_coarse), 0.09);
     EXPECT_LT(std::abs(e_fine), 0.7 * std::abs(e_coarse));  // converging
+    fs::remove_all(dir);
+}
+
+TEST(PileRun, AMaintainedLoadIsCarriedByTheSoil) {
+    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-load-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ifstream in(std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/jacked-open-pile-tiny.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    const std::string last = "pile: {velocity: 0.0}}\n";
+    yaml.insert(yaml.find(last) + last.size(),
+                "  - {name: load, type: quasi_static, max_steps: 4000, tolerance: 1.0e-5, pile: {force: 40.0e3}}\n");
+    const fs::path file = dir / "load.yaml";
+    std::ofstream(file) << yaml;
+    ASSERT_EQ(run_case(file.string(), dir / "out"), 0);
+    auto h = read_history(dir / "out" / "history.csv");
+    const double weight = 7850.0 * 9.81 * std::numbers::pi * (0.2 * 0.2 - 0.18 * 0.18) * 0.6;
+    const double soil = h["outer_shaft_resistance_N"].back() + h["inner_shaft_resistance_N"].back() + h["base_resistance_N"].back();
+    EXPECT_DOUBLE_EQ(h["pile_head_force_N"].back(), 40.0e3);
+    EXPECT_NEAR(soil / (40.0e3 + weight), 1.0, 5e-3);
     fs::remove_all(dir);
 }
 

@@ -66,6 +66,20 @@ TEST(PileInput, APileStartingInTheSoilMustBeWishedInPlace) {
     EXPECT_TRUE(run.pile.contact.ignore_initial_overlap);
 }
 
+TEST(PileInput, AStageDrivesTheHeadByVelocityOrByForceNotBoth) {
+    const auto both = error_of(replaced(jacking(), "pile: {velocity: 0.5,", "pile: {force: 1.0e5, velocity: 0.5,"), "both");
+    EXPECT_NE(both.find("stages[0].pile.velocity"), std::string::npos) << both;
+    EXPECT_NE(both.find("one of velocity"), std::string::npos) << both;
+    const auto neither = error_of(replaced(jacking(), "pile: {velocity: 0.5, rise_time: 0.1}", "pile: {rise_time: 0.1}"), "neither");
+    EXPECT_NE(neither.find("neither"), std::string::npos) << neither;
+    const fs::path file = write(replaced(jacking(), "pile: {velocity: 0.0, rise_time: 0.05}", "pile: {force: 2.0e5}"), "force");
+    const auto c = pio::read_mpm_case(file.string());
+    fs::remove(file);
+    EXPECT_TRUE(c.stages[1].pile_loaded);
+    EXPECT_FALSE(c.stages[1].pile_driven);
+    EXPECT_DOUBLE_EQ(c.stages[1].pile_force, 2.0e5);
+}
+
 TEST(PileInput, AValidCaseBuildsTheWallTheContactAndAFieldEachSide) {
     const fs::path file = write(jacking(), "valid");
     const auto c = pio::read_mpm_case(file.string());
