@@ -153,8 +153,15 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
             const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
             gap = d - reach;
-            // Apart, or the point's centre is past the surface (it belongs to the other side).
-            if (gap >= 0.0 || d < -reach) {
+            // Apart, or the point's centre is past the surface: inside the body, where a wall
+            // thinner than the point can catch it at a corner; it is let go (pushing it out
+            // from there would take a force of the penalty times its half-size) and counted.
+            if (gap >= 0.0) {
+                release(i);
+                continue;
+            }
+            if (d < 0.0) {
+                ++totals_.points_inside;
                 release(i);
                 continue;
             }

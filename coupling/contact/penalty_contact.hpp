@@ -38,6 +38,7 @@ struct ContactTotals {
     double max_penetration = 0.0;             // m, the deepest point domain into a segment
     int points_in_contact = 0;
     int points_sticking = 0;
+    int points_inside = 0;  // centres past the surface, let go (a wall thinner than a point)
     double stable_time_step = 1e300;  // s, over the points near the surface
 };
 

@@ -6,7 +6,8 @@ namespace pilempm::coupling {
 
 void PileRecorder::add_columns(std::vector<std::string>& columns) const {
     for (const char* c : {"pile_head_settlement_m", "pile_head_force_N", "outer_shaft_resistance_N",
-                          "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "max_penetration_over_cell"})
+                          "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
+                          "max_penetration_over_cell"})
         columns.push_back(c);
 }
 
@@ -20,6 +21,7 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     row.push_back(up(SurfaceSide::Inner));
     row.push_back(up(SurfaceSide::Toe));
     row.push_back(static_cast<double>(t.points_in_contact));
+    row.push_back(static_cast<double>(t.points_inside));
     row.push_back(t.max_penetration / std::min(m.grid.spacing[0], m.grid.spacing[1]));
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The coupled pile's columns in a run's history: the head's settlement and the jack's
 // force, the soil's axial resistance on the pile split into outer shaft, inner shaft and
-// base (the toe's annulus), the points in contact and the deepest penetration.
+// base (the toe's annulus), the points in contact, those let go inside the pile and the
+// deepest penetration.
 #include "coupling/contact/coupled_pile.hpp"
 #include "coupling/driver/recorders.hpp"
 
