@@ -29,9 +29,13 @@ ContactSurface pile_contact_surface(const fem::PileMesh& mesh) {
     ContactSurface s;
     s.x.assign(mesh.coordinates.begin(), mesh.coordinates.end());
     s.v.assign(mesh.coordinates.size(), 0.0);
+    double r_max = 0.0;
+    for (int i = 0; i < mesh.num_nodes(); ++i) r_max = std::max(r_max, mesh.coordinates[2 * i]);
     for (const auto& [key, edge] : once) {
         const double* xa = &mesh.coordinates[2 * edge.first];
         const double* xb = &mesh.coordinates[2 * edge.second];
+        // A solid pile's edges on the axis are its symmetry line, not a surface.
+        if (xa[0] <= 1e-12 * r_max && xb[0] <= 1e-12 * r_max) continue;
         const double tr = xb[0] - xa[0], tz = xb[1] - xa[1];
         const double nr = tz, nz = -tr;  // outward: to the right of a -> b
         SurfaceSide side;

@@ -81,6 +81,13 @@ ExplicitPile::ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSu
         head_dofs_.push_back(mesh_.axial_dof(node));
         head_mass_ += ops_.lumped_mass[mesh_.axial_dof(node)];
     }
+    // A solid (closed-ended) axisymmetric pile: its nodes on the axis cannot move radially.
+    if (mesh_.dim == 2) {
+        double r_max = 0.0;
+        for (int i = 0; i < mesh_.num_nodes(); ++i) r_max = std::max(r_max, mesh_.coordinates[2 * i]);
+        for (int i = 0; i < mesh_.num_nodes(); ++i)
+            if (mesh_.coordinates[2 * i] <= 1e-12 * r_max) fixed_[2 * i] = 1;
+    }
     double toe_mass = 0.0;
     for (int node : mesh_.toe_nodes) toe_mass += ops_.lumped_mass[mesh_.axial_dof(node)];
     for (int node : mesh_.toe_nodes) {
@@ -165,6 +172,7 @@ void ExplicitPile::list_reaction_dofs() {
 double ExplicitPile::support_reaction(const VelocityUpdate& c) const {
     double r = 0.0;
     for (int i : reaction_dofs_) {
+        if (i % mesh_.dim != mesh_.dim - 1) continue;  // the toe's reaction is axial (not the axis's radial hold)
         const double f = f_ext_[i] - f_int_[i];
         if (fixed_[i]) {
             r -= f;  // the support holds the node still: reaction balances f

@@ -87,6 +87,10 @@ struct MpmPileInput {
     double penalty_factor = 4.0;    // k_n = factor x M V_p / h_p^2 (coupling/contact/penalty_contact.hpp)
     bool self_weight = true;        // the pile's weight under the case's gravity
     bool wished_in_place = false;   // starts embedded: the soil in its wall removed, overlaps ignored
+    // Open at the toe (a tube; segments run head to toe), else closed-ended (solid there).
+    bool open_ended() const {
+        return !pile.segments.empty() && pile.segments.back().wall_thickness < 0.5 * pile.segments.back().outer_diameter;
+    }
 };
 
 struct MpmCase : CaseFile {

@@ -91,7 +91,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         m.grid.fields = 2;
     }
     // The soil inside and outside an open pile's wall: a set of fields each (a cut).
-    if (c.pile.present) m.grid.fields *= 2;
+    if (c.pile.present && c.pile.open_ended()) m.grid.fields *= 2;
     m.grid.allocate();
     m.shape = c.shape;
     m.axisymmetric = c.axisymmetric;
@@ -265,6 +265,8 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.contact.ring = full_ring(1.0);
             pile.contact.ignore_initial_overlap = c.pile.wished_in_place;
             pile.frame.toe_elevation = c.pile.toe_elevation;
+            // A solid (closed-ended) pile has no soil inside: no cut through the grid's fields.
+            pile.cut_fields = c.pile.open_ended();
             pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
             for (const auto& st : c.stages)
                 pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_loaded, st.pile_force, st.pile_rise_time});

@@ -28,10 +28,10 @@ void read_pile(MapReader m, PileInput& c, CaseFile& file, bool with_toe) {
         seg.length = s.number("length", positive("length in m"));
         seg.outer_diameter = s.number("outer_diameter", positive("diameter in m"));
         seg.wall_thickness = s.number("wall_thickness", positive("wall thickness in m"));
-        if (seg.wall_thickness >= 0.5 * seg.outer_diameter) {
+        if (seg.wall_thickness > 0.5 * seg.outer_diameter) {
             std::ostringstream f;
             f << seg.wall_thickness << " m with an outer radius of " << 0.5 * seg.outer_diameter << " m";
-            s.fail("wall_thickness", "a wall thinner than the outer radius", f.str());
+            s.fail("wall_thickness", "a wall no thicker than the outer radius (equal: a solid, closed-ended pile)", f.str());
         }
         s.finish();
         c.segments.push_back(seg);

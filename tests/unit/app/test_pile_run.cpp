@@ -5,7 +5,7 @@
 // A pile wished in place in soil at K0, after the nil step: the normal traction on its
 // outer shaft is the soil's horizontal stress K0 rho g z, converging on two grids. A
 // maintained load after jacking (force control, quasi-static): the soil carries the load
-// plus the weight within 0.5 %.
+// plus the weight within 0.5 %; so it does for a closed-ended (solid) pile, all on its base.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -110,6 +110,32 @@ TEST(PileRun, AMaintainedLoadIsCarriedByTheSoil) {
     const double soil = h["outer_shaft_resistance_N"].back() + h["inner_shaft_resistance_N"].back() + h["base_resistance_N"].back();
     EXPECT_DOUBLE_EQ(h["pile_head_force_N"].back(), 40.0e3);
     EXPECT_NEAR(soil / (40.0e3 + weight), 1.0, 5e-3);
+    fs::remove_all(dir);
+}
+
+TEST(PileRun, AClosedEndedPileUnderALoadIsCarriedByTheSoil) {
+    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-solid-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ifstream in(std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/jacked-open-pile-tiny.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    // A solid steel cylinder (D = 0.4 m) on the surface, pushed by 20 kN: a rigid punch.
+    yaml.replace(yaml.find("wall_thickness: 0.02"), 20, "wall_thickness: 0.2");
+    const auto stages = yaml.find("stages:");
+    yaml.replace(stages, yaml.find("output:") - stages,
+                 "stages:\n  - {name: load, type: quasi_static, max_steps: 4000, tolerance: 1.0e-5, pile: {force: 20.0e3}}\n");
+    const fs::path file = dir / "solid.yaml";
+    std::ofstream(file) << yaml;
+    ASSERT_EQ(run_case(file.string(), dir / "out"), 0);
+    auto h = read_history(dir / "out" / "history.csv");
+    const double weight = 7850.0 * 9.81 * std::numbers::pi * 0.2 * 0.2 * 0.6;
+    const double base = h["base_resistance_N"].back();
+    EXPECT_NEAR(base / (20.0e3 + weight), 1.0, 5e-3);  // all of it on the base
+    EXPECT_LT(std::abs(h["inner_shaft_resistance_N"].back()), 1e-9);
+    double deepest = 0.0;
+    for (double g : h["max_penetration_over_cell"]) deepest = std::max(deepest, g);
+    EXPECT_LT(deepest, 0.01);
     fs::remove_all(dir);
 }
 

@@ -3,7 +3,8 @@
 // contact, in axisymmetry. Pile + soil momentum is conserved to round-off (1e-10) at every step;
 // the penetration stays below 1 % of the cell; and, as 1D wave theory has it for equal
 // impedances and lengths, the striker stops and the struck bar leaves at the impact speed.
-// Also the surface: the wall's boundary edges, outward and named by side.
+// Also the surface: the wall's boundary edges, outward and named by side; a solid pile's
+// has none on the axis, and its axis nodes stay on the axis.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -111,6 +112,38 @@ Collision collide(double h) {
 }
 
 }  // namespace
+
+TEST(PileContactSurface, ASolidPileHasNoSurfaceOnItsAxisAndItsAxisStaysOnIt) {
+    fem::PileGeometry g;
+    g.stations = {{0.0, 0.0, kOuter}, {kLength, 0.0, kOuter}};
+    const auto mesh = fem::mesh_axisymmetric_wall(g, 0.05, 4, std::string(PILEMPM_SOURCE_DIR) + "/meshes/pile_wall_axisymmetric.geo");
+    const ContactSurface s = pile_contact_surface(mesh);
+    double length[5] = {};
+    for (int k = 0; k < s.num_segments(); ++k)
+        length[static_cast<int>(s.side[k])] += std::hypot(s.x[2 * s.b[k]] - s.x[2 * s.a[k]], s.x[2 * s.b[k] + 1] - s.x[2 * s.a[k] + 1]);
+    EXPECT_EQ(length[static_cast<int>(SurfaceSide::Inner)], 0.0);
+    EXPECT_NEAR(length[static_cast<int>(SurfaceSide::Outer)], kLength, 1e-12);
+    EXPECT_NEAR(length[static_cast<int>(SurfaceSide::Toe)], kOuter, 1e-12);
+    // Pushed at its head, the nodes on the axis move along it only.
+    fem::ExplicitPile pile(mesh, bar_material(), {});
+    const double dt = 0.9 * pile.stable_time_step();
+    for (int n = 0; n < 200; ++n) {
+        pile.compute_internal_force();
+        pile.clear_external_force();
+        pile.add_head_force(-1.0e5);
+        pile.advance_velocity(dt);
+        pile.advance_displacement(dt);
+    }
+    int on_axis = 0;
+    for (int i = 0; i < mesh.num_nodes(); ++i) {
+        if (mesh.coordinates[2 * i] != 0.0) continue;
+        ++on_axis;
+        EXPECT_EQ(pile.displacement()[2 * i], 0.0);
+    }
+    EXPECT_GT(on_axis, 10);
+    EXPECT_LT(pile.displacement()[pile.mesh().axial_dof(pile.mesh().head_nodes.front())], 0.0);
+    EXPECT_EQ(pile.toe_reaction(), 0.0);  // the axis's radial hold is not a toe reaction
+}
 
 TEST(PileSoilCollision, MomentumIsConservedAndTheStrikerStops) {
     double previous = 1.0;
