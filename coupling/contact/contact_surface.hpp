@@ -10,8 +10,6 @@ namespace pilempm::coupling {
 // Where a segment lies on the pile: what the head load splits into.
 enum class SurfaceSide { Outer, Inner, Toe, Head, Other };
 
-const char* surface_side_name(SurfaceSide side);
-
 struct ContactSurface {
     std::vector<double> x;  // 2 per node, m, current position in the soil's frame
     std::vector<double> v;  // 2 per node, m/s
@@ -23,7 +21,6 @@ struct ContactSurface {
     // for a penalty as stiff as the pair of bodies allows.
     std::vector<double> inverse_mass;
 
-    int num_nodes() const { return static_cast<int>(x.size() / 2); }
     int num_segments() const { return static_cast<int>(a.size()); }
     void add_segment(int from, int to, SurfaceSide where) {
         a.push_back(from);

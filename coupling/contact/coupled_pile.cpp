@@ -84,7 +84,6 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         pile_.advance_displacement(sub);
     }
     head_force_ = head.loaded ? target : -jack_impulse / dt;
-    for (int c = 0; c < 2; ++c) impulse_[c] += contact_.totals().force_on_master[c] * dt;
 }
 
 void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage) {
@@ -108,7 +107,6 @@ std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() co
             {"contact_segment", segment},
             {"contact_overlap", contact_.overlap()},
             {"contact_started", {contact_.started() ? 1.0 : 0.0}},
-            {"pile_contact_impulse", {impulse_[0], impulse_[1]}},
             {"pile_head_force", {head_force_}},
             {"contact_time_step", {contact_dt_}}};
 }
@@ -123,8 +121,6 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
     const auto& seg = find("contact_segment");
     contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()), find("contact_overlap"),
                      find("contact_started").at(0) != 0.0);
-    const auto& imp = find("pile_contact_impulse");
-    impulse_ = {imp.at(0), imp.at(1)};
     head_force_ = find("pile_head_force").at(0);
     contact_dt_ = find("contact_time_step").at(0);
 }

@@ -69,8 +69,6 @@ public:
     double head_settlement() const { return -pile_.head_displacement(); }  // m, down positive
     // The pile's momentum (the whole ring; velocities at the last half step), N s.
     std::array<double, 2> momentum() const;
-    // The impulse the contact gave the pile since the start (the whole ring), N s.
-    const std::array<double, 2>& contact_impulse() const { return impulse_; }
 
 private:
     fem::ExplicitPile& pile_;
@@ -84,7 +82,6 @@ private:
     double contact_dt_ = 1e300;  // s: the step the contact allows (none yet)
     std::vector<double> modulus_;  // P-wave modulus per material, Pa
     double head_force_ = 0.0;
-    std::array<double, 2> impulse_{};
 };
 
 }  // namespace pilempm::coupling

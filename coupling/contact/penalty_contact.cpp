@@ -81,7 +81,6 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     const long n = static_cast<long>(p.size());
     tangential_.resize(n, 0.0);
     segment_.resize(n, -1);
-    normal_.assign(n, 0.0);
     const bool first = !started_;
     started_ = true;
     if (settings_.ignore_initial_overlap) overlap_.resize(n, 0.0);
@@ -144,11 +143,11 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             }
             const double l1 = std::hypot(half[0], half[1]), l2 = std::hypot(half[2], half[3]);
             const double depth1 = (1.0 - std::abs(a)) * l1, depth2 = (1.0 - std::abs(b)) * l2;
-            const bool first = depth1 <= depth2;
-            const double sign = -((first ? a : b) > 0.0 ? 1.0 : -1.0);
-            nrm[0] = sign * (first ? half[0] / l1 : half[2] / l2);
-            nrm[1] = sign * (first ? half[1] / l1 : half[3] / l2);
-            gap = -(first ? depth1 : depth2);
+            const bool along_e1 = depth1 <= depth2;
+            const double sign = -((along_e1 ? a : b) > 0.0 ? 1.0 : -1.0);
+            nrm[0] = sign * (along_e1 ? half[0] / l1 : half[2] / l2);
+            nrm[1] = sign * (along_e1 ? half[1] / l1 : half[3] / l2);
+            gap = -(along_e1 ? depth1 : depth2);
         } else {
             const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
             const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
@@ -187,11 +186,9 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         const bool same_face = segment_[i] >= 0 && s.side[segment_[i]] == s.side[k];
         double ft = (same_face ? tangential_[i] : 0.0) - settings_.tangential_ratio * kn * vrel * dt;
         const double cap = mu * fn;
-        if (std::abs(ft) > cap) ft = std::copysign(cap, ft);
-        else if (cap > 0.0) ++totals_.points_sticking;
+        if (std::abs(ft) > cap) ft = std::copysign(cap, ft);  // slip, else stick
         tangential_[i] = ft;
         segment_[i] = k;
-        normal_[i] = fn;
         const double f[2] = {fn * nrm[0] + ft * t[0], fn * nrm[1] + ft * t[1]};
         for (int c = 0; c < 2; ++c) {
             p.external_force[2 * i + c] = f[c];

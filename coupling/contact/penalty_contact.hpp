@@ -37,7 +37,6 @@ struct ContactTotals {
     std::array<std::array<double, 2>, 5> force_by_side{};
     double max_penetration = 0.0;             // m, the deepest point domain into a segment
     int points_in_contact = 0;
-    int points_sticking = 0;
     int points_inside = 0;  // centres past the surface, let go (a wall thinner than a point)
     double stable_time_step = 1e300;  // s, over the points near the surface
 };
@@ -57,11 +56,10 @@ public:
     // The force on each segment (2 per segment, the master's measure), for traction profiles.
     const std::vector<double>& segment_force() const { return segment_force_; }
     const ContactTotals& totals() const { return totals_; }
-    // Per point: the tangential force it carries (N, along its segment's a -> b), its
-    // segment (-1 off contact) and the normal force (N, >= 0), for output and restart.
+    // Per point: the tangential force it carries (N, along its segment's a -> b) and its
+    // segment (-1 off contact), for restart.
     const std::vector<double>& tangential_force() const { return tangential_; }
     const std::vector<int>& segment() const { return segment_; }
-    const std::vector<double>& normal_force() const { return normal_; }
     // The initial overlap each point still has (m, <= 0), when ignored.
     const std::vector<double>& overlap() const { return overlap_; }
     bool started() const { return started_; }
@@ -78,7 +76,7 @@ private:
     int nearest_segment(const ContactSurface& s, const double* x, double& xi) const;
 
     ContactSettings settings_;
-    std::vector<double> nodal_force_, segment_force_, tangential_, normal_;
+    std::vector<double> nodal_force_, segment_force_, tangential_;
     std::vector<int> segment_;
     std::vector<double> overlap_;  // per point, when initial overlaps are ignored
     bool started_ = false;         // the first step (and its overlaps) taken

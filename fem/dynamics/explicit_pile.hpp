@@ -63,7 +63,6 @@ public:
     // step): it damps the pile's vibration, strongest at high frequency, and leaves rigid
     // motion alone, so a pile pushed at a steady speed feels no drag from it. 0: none.
     void set_stiffness_damping(double beta) { stiffness_damping_ = beta; }
-    double stiffness_damping() const { return stiffness_damping_; }
     // The stable step with that damping (the undamped one when beta = 0).
     double damped_stable_time_step() const;
     // A checkpoint's state back: u_n and v_{n-1/2}, a value per DOF each.

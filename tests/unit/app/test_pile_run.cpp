@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/unit/io/cases/case_text.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -67,21 +69,43 @@ double k0_shaft_error(const fs::path& out) {
     return n ? sum / n : 1e9;
 }
 
+fs::path fresh_dir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Runs `yaml` (written into dir) into dir/out and returns its history.
+std::map<std::string, std::vector<double>> run_text(const fs::path& dir, const std::string& yaml) {
+    const fs::path file = dir / "case.yaml";
+    std::ofstream(file) << yaml;
+    EXPECT_EQ(run_case(file.string(), dir / "out"), 0);
+    return read_history(dir / "out" / "history.csv");
+}
+
+// The soil's axial resistance on the pile at the end of a run, N.
+double soil_resistance(std::map<std::string, std::vector<double>>& h) {
+    return h["outer_shaft_resistance_N"].back() + h["inner_shaft_resistance_N"].back() + h["base_resistance_N"].back();
+}
+
+// The tiny case's 0.6 m steel pile (D = 0.4 m): its weight with a 20 mm wall and solid, N.
+const double kTubeWeight = 7850.0 * 9.81 * std::numbers::pi * (0.2 * 0.2 - 0.18 * 0.18) * 0.6;
+const double kSolidWeight = 7850.0 * 9.81 * std::numbers::pi * 0.2 * 0.2 * 0.6;
+
+const char* kTinyCase = "cases/jacking/jacked-open-pile-tiny.yaml";
+
 }  // namespace
 
 TEST(PileRun, AWishedInPlacePileAtRestFeelsK0OnItsShaft) {
     const std::string fine = std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/wished-in-place-k0.yaml";
-    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-k0-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    const fs::path dir = fresh_dir("k0");
     // The same case on cells of 0.1 m (the shipped one has 0.05 m).
-    std::ifstream in(fine);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string yaml = text.str();
-    yaml.replace(yaml.find("cells: [40, 90]"), 15, "cells: [20, 45]");
-    const fs::path coarse = dir / "coarse.yaml";
-    std::ofstream(coarse) << yaml;
-    ASSERT_EQ(run_case(coarse.string(), dir / "coarse"), 0);
+    const std::string coarse = case_text::replaced(case_text::shipped("cases/jacking/wished-in-place-k0.yaml"),
+                                                   "cells: [40, 90]", "cells: [20, 45]");
+    const fs::path coarse_file = dir / "coarse.yaml";
+    std::ofstream(coarse_file) << coarse;
+    ASSERT_EQ(run_case(coarse_file.string(), dir / "coarse"), 0);
     ASSERT_EQ(run_case(fine, dir / "fine"), 0);
     const double e_coarse = k0_shaft_error(dir / "coarse"), e_fine = k0_shaft_error(dir / "fine");
     std::printf("  outer shaft sigma_n against K0 rho g z: %+.2f %% (0.1 m cells), %+.2f %% (0.05 m)\n", 100.0 * e_coarse,
@@ -93,45 +117,25 @@ TEST(PileRun, AWishedInPlacePileAtRestFeelsK0OnItsShaft) {
 }
 
 TEST(PileRun, AMaintainedLoadIsCarriedByTheSoil) {
-    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-load-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ifstream in(std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/jacked-open-pile-tiny.yaml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string yaml = text.str();
+    const fs::path dir = fresh_dir("load");
     const std::string last = "pile: {velocity: 0.0}}\n";
-    yaml.insert(yaml.find(last) + last.size(),
-                "  - {name: load, type: quasi_static, max_steps: 4000, tolerance: 1.0e-5, pile: {force: 40.0e3}}\n");
-    const fs::path file = dir / "load.yaml";
-    std::ofstream(file) << yaml;
-    ASSERT_EQ(run_case(file.string(), dir / "out"), 0);
-    auto h = read_history(dir / "out" / "history.csv");
-    const double weight = 7850.0 * 9.81 * std::numbers::pi * (0.2 * 0.2 - 0.18 * 0.18) * 0.6;
-    const double soil = h["outer_shaft_resistance_N"].back() + h["inner_shaft_resistance_N"].back() + h["base_resistance_N"].back();
+    auto h = run_text(dir, case_text::replaced(case_text::shipped(kTinyCase), last,
+                                               last + "  - {name: load, type: quasi_static, max_steps: 4000, "
+                                                      "tolerance: 1.0e-5, pile: {force: 40.0e3}}\n"));
     EXPECT_DOUBLE_EQ(h["pile_head_force_N"].back(), 40.0e3);
-    EXPECT_NEAR(soil / (40.0e3 + weight), 1.0, 5e-3);
+    EXPECT_NEAR(soil_resistance(h) / (40.0e3 + kTubeWeight), 1.0, 5e-3);
     fs::remove_all(dir);
 }
 
 TEST(PileRun, AClosedEndedPileUnderALoadIsCarriedByTheSoil) {
-    const fs::path dir = fs::temp_directory_path() / ("pilempm-pile-solid-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ifstream in(std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/jacked-open-pile-tiny.yaml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string yaml = text.str();
+    const fs::path dir = fresh_dir("solid");
     // A solid steel cylinder (D = 0.4 m) on the surface, pushed by 20 kN: a rigid punch.
-    yaml.replace(yaml.find("wall_thickness: 0.02"), 20, "wall_thickness: 0.2");
+    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
     const auto stages = yaml.find("stages:");
     yaml.replace(stages, yaml.find("output:") - stages,
                  "stages:\n  - {name: load, type: quasi_static, max_steps: 4000, tolerance: 1.0e-5, pile: {force: 20.0e3}}\n");
-    const fs::path file = dir / "solid.yaml";
-    std::ofstream(file) << yaml;
-    ASSERT_EQ(run_case(file.string(), dir / "out"), 0);
-    auto h = read_history(dir / "out" / "history.csv");
-    const double weight = 7850.0 * 9.81 * std::numbers::pi * 0.2 * 0.2 * 0.6;
-    const double base = h["base_resistance_N"].back();
-    EXPECT_NEAR(base / (20.0e3 + weight), 1.0, 5e-3);  // all of it on the base
+    auto h = run_text(dir, yaml);
+    EXPECT_NEAR(h["base_resistance_N"].back() / (20.0e3 + kSolidWeight), 1.0, 5e-3);  // all of it on the base
     EXPECT_LT(std::abs(h["inner_shaft_resistance_N"].back()), 1e-9);
     double deepest = 0.0;
     for (double g : h["max_penetration_over_cell"]) deepest = std::max(deepest, g);
@@ -140,21 +144,17 @@ TEST(PileRun, AClosedEndedPileUnderALoadIsCarriedByTheSoil) {
 }
 
 TEST(PileRun, AHeldPileCarriesItsJackAndWeightOnTheSoil) {
-    const fs::path out = fs::temp_directory_path() / ("pilempm-pile-run-" + std::to_string(::getpid()));
-    ASSERT_EQ(run_case(std::string(PILEMPM_SOURCE_DIR) + "/cases/jacking/jacked-open-pile-tiny.yaml", out), 0);
-    auto h = read_history(out / "history.csv");
+    const fs::path dir = fresh_dir("held"), out = dir / "out";
+    auto h = run_text(dir, case_text::shipped(kTinyCase));
     ASSERT_FALSE(h["time_s"].empty());
-    // The pile's weight: steel 7850 kg/m^3, the 0.4 m tube with a 20 mm wall, 0.6 m long.
-    const double weight = 7850.0 * 9.81 * std::numbers::pi * (0.2 * 0.2 - 0.18 * 0.18) * 0.6;
-    const double jack = h["pile_head_force_N"].back();
-    const double soil = h["outer_shaft_resistance_N"].back() + h["inner_shaft_resistance_N"].back() + h["base_resistance_N"].back();
-    EXPECT_GT(soil, 10.0 * weight);  // the soil carries the jack's push
-    EXPECT_NEAR((jack + weight) / soil, 1.0, 5e-3);
+    const double jack = h["pile_head_force_N"].back(), soil = soil_resistance(h);
+    EXPECT_GT(soil, 10.0 * kTubeWeight);  // the soil carries the jack's push
+    EXPECT_NEAR((jack + kTubeWeight) / soil, 1.0, 5e-3);
     EXPECT_NEAR(h["pile_head_settlement_m"].back(), 0.025, 1e-3);  // 0.5 m/s for 0.05 s
     double deepest = 0.0;
     for (double g : h["max_penetration_over_cell"]) deepest = std::max(deepest, g);
     EXPECT_LT(deepest, 0.01);
     for (const char* f : {"pile_tractions_outer.csv", "pile_tractions_inner.csv", "pile_tractions_toe.csv", "vtk/pile.pvd"})
         EXPECT_TRUE(fs::exists(out / f)) << f;
-    fs::remove_all(out);
+    fs::remove_all(dir);
 }
