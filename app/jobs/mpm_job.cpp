@@ -32,6 +32,32 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The FE pile coupled to the soil through the contact, carried by the soil's stages, its
+// history recorded (nothing in 3D: the pile is axisymmetric).
+template <int D>
+struct AttachedPile {
+    std::unique_ptr<fem::ExplicitPile> pile;
+    std::unique_ptr<coupling::CoupledPile> coupled;
+    AttachedPile(io::MpmRun<D>& run, coupling::StageDriver<D>& driver) {
+        if constexpr (D == 2) {
+            if (!run.pile.present) return;
+            pile = std::make_unique<fem::ExplicitPile>(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
+            coupled = std::make_unique<coupling::CoupledPile>(*pile, run.pile.contact, run.pile.frame, run.pile.gravity,
+                                                              run.pile.cut_fields);
+            coupled->set_head_control(run.pile.heads);
+            driver.couple(coupled.get());
+            driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled));
+        }
+    }
+};
+
+// What the checks read of the case: its parameters and the first material's constants.
+mpm::MpmCheckContext check_context(const io::MpmCase& c) {
+    const auto& first = c.materials.front();
+    return {c.verification_checks, c.verification, c.gravity, first.density, first.model, first.poisson_ratio,
+            c.probes,             first.youngs_modulus};
+}
+
 // The case on a grid `factor` times finer along every axis, run with no output, and its
 // checks; their names say the grid.
 template <int D>
@@ -42,11 +68,17 @@ std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::M
         if (c.refined_axes[d]) refined.cells[d] = static_cast<int>(std::lround(c.cells[d] * factor));
     grid = std::to_string(refined.cells[0]);
     for (int d = 1; d < D; ++d) grid.append("x").append(std::to_string(refined.cells[d]));
+    if (refined.pile.present) {
+        // The pile's mesh refined with the grid.
+        refined.pile.pile.element_size /= factor;
+        refined.pile.pile.radial_divisions = static_cast<int>(std::lround(c.pile.pile.radial_divisions * factor));
+    }
     io::MpmRun<D> run = io::build_mpm_run<D>(refined);
     coupling::StageDriver<D> driver(run.model, run.stages, run.loads, run.settings);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
+    const AttachedPile<D> pile(run, driver);
     driver.run();
     auto checks = mpm::run_mpm_verification<D>(context, run.model, run.x0, driver.history());
     for (auto& k : checks) k.name += "_grid_" + grid;
@@ -137,19 +169,13 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
-    // The FE pile, coupled to the soil through the contact, carried by the soil's stages.
-    std::unique_ptr<fem::ExplicitPile> pile;
-    std::unique_ptr<coupling::CoupledPile> coupled;
+    const AttachedPile<D> attached(run, driver);
+    const auto& pile = attached.pile;
+    const auto& coupled = attached.coupled;
     std::unique_ptr<io::PileVtkSeries> pile_vtk;
     if constexpr (D == 2) {
         if (run.pile.present) {
-            pile = std::make_unique<fem::ExplicitPile>(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
-            coupled = std::make_unique<coupling::CoupledPile>(*pile, run.pile.contact, run.pile.frame, run.pile.gravity,
-                                                              run.pile.cut_fields);
-            coupled->set_head_control(run.pile.heads);
-            driver.couple(coupled.get());
             output.set_body(coupled.get());
-            driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled));
             // The pile in ParaView over the soil (its mesh placed in the soil's frame), with
             // its displacements, axial stress and contact forces.
             fem::PileMesh placed = run.pile.mesh;
@@ -202,10 +228,8 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                                        "poroelastic_wave_history") != c.verification_checks.end();
     if (poroelastic) {
         // The probes' histories beside the dynamic poro-elastic reference, for the plot.
-        const mpm::MpmCheckContext context{c.verification_checks, c.verification, c.gravity, c.materials.front().density,
-                                           c.materials.front().model, c.materials.front().poisson_ratio, c.probes};
         io::write_csv(staged.path() / "poroelastic_wave_histories.csv",
-                      mpm::poroelastic_wave_histories<D>(context, m, run.x0, history));
+                      mpm::poroelastic_wave_histories<D>(check_context(c), m, run.x0, history));
     }
 
     io::JsonObject summary;
@@ -238,9 +262,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
         summary.add("extent_min_m", lo).add("extent_max_m", hi);
     }
     if (!c.verification_checks.empty()) {
-        const auto& first = c.materials.front();
-        const mpm::MpmCheckContext context{c.verification_checks, c.verification, c.gravity, first.density,
-                                           first.model, first.poisson_ratio, c.probes};
+        const mpm::MpmCheckContext context = check_context(c);
         auto checks = mpm::run_mpm_verification<D>(context, m, run.x0, history);
         if (!c.grid_sequence.empty()) {
             // The case's own grid (factor 1) and the others, coarsest to finest in the file.

@@ -49,6 +49,11 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     modulus_.resize(m.materials.size());
     for (std::size_t k = 0; k < m.materials.size(); ++k) modulus_[k] = m.materials[k]->p_wave_modulus();
     contact_.compute(m.particles, m.shape, surface_, dt, modulus_);
+    // The steel is impermeable: the pore water does not cross the surface the soil touches.
+    m.water_walls.clear();
+    if (m.grid.water)
+        for (const ContactTouch& t : contact_.touches())
+            m.water_walls.push_back({t.point, {t.normal[0], t.normal[1], 0.0}, {t.on_surface[0], t.on_surface[1], 0.0}});
     contact_dt_ = contact_.totals().stable_time_step;
     const PileHeadControl head = stage < static_cast<int>(head_.size()) ? head_[stage] : PileHeadControl{};
     // The target over the step: its mid-time's.

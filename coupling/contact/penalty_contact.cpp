@@ -87,6 +87,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     nodal_force_.assign(s.x.size(), 0.0);
     segment_force_.assign(2 * s.a.size(), 0.0);
     totals_ = {};
+    touches_.clear();
     std::fill(p.external_force.begin(), p.external_force.end(), 0.0);
     // The search margin: the largest half-extent of a point domain along an axis.
     double margin = 0.0, half[4];
@@ -198,6 +199,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             totals_.force_by_side[static_cast<int>(s.side[k])][c] -= ring * f[c];
             segment_force_[2 * k + c] -= ring * f[c];
         }
+        touches_.push_back({i, {nrm[0], nrm[1]}, {xs[0], xs[1]}});
         ++totals_.points_in_contact;
         totals_.max_penetration = std::max(totals_.max_penetration, -gap);
     }

@@ -31,6 +31,14 @@ struct ContactSettings {
     bool ignore_initial_overlap = false;
 };
 
+// A point pressed on the surface this step: the surface's unit normal into the soil there
+// and the nearest point on it (the body is impermeable to the soil's pore water there).
+struct ContactTouch {
+    long point = 0;
+    double normal[2] = {0, 0};
+    double on_surface[2] = {0, 0};  // m
+};
+
 struct ContactTotals {
     std::array<double, 2> force_on_master{};  // N (master's measure: the whole ring)
     // The same by the side of the master it acts on (SurfaceSide: outer, inner, toe, head, other).
@@ -56,6 +64,7 @@ public:
     // The force on each segment (2 per segment, the master's measure), for traction profiles.
     const std::vector<double>& segment_force() const { return segment_force_; }
     const ContactTotals& totals() const { return totals_; }
+    const std::vector<ContactTouch>& touches() const { return touches_; }
     // Per point: the tangential force it carries (N, along its segment's a -> b) and its
     // segment (-1 off contact), for restart.
     const std::vector<double>& tangential_force() const { return tangential_; }
@@ -81,6 +90,7 @@ private:
     std::vector<double> overlap_;  // per point, when initial overlaps are ignored
     bool started_ = false;         // the first step (and its overlaps) taken
     ContactTotals totals_;
+    std::vector<ContactTouch> touches_;
     // Segments binned on a uniform grid over the surface's box, grown by the search margin.
     double bin_origin_[2] = {0.0, 0.0}, bin_size_ = 1.0;
     int bins_[2] = {0, 0};

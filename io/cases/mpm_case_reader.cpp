@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse", "granular_runout",
+                                          "absorbed_energy", "footing_collapse", "rigid_punch", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
                                           "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
                                           "poroelastic_wave_history",
@@ -294,7 +294,8 @@ MpmCase read_mpm_case(const std::string& file) {
         c.verification_checks = v->words("checks", kChecks);
         for (const char* key : {"surface", "pressure", "inner_radius", "outer_radius", "depth",
                                 "footing_width", "reference", "initial_width", "height", "noise_bound",
-                                "min_order", "absorbed_share", "load", "pore_tolerance"})
+                                "min_order", "absorbed_share", "load", "pore_tolerance", "punch_radius",
+                                "settlement_tolerance"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));

@@ -28,6 +28,15 @@ struct SurfaceLoad {
     double force[3] = {0, 0, 0};   // N (per radian in axisymmetry)
 };
 
+// A point against an impermeable body's surface (the FE pile, set by coupling each step):
+// the surface's unit normal, pointing into the soil, and a point on it. The pore water does
+// not cross it relative to the skeleton (Solver: hold_water_at_walls).
+struct WaterWall {
+    long point = 0;
+    double normal[3] = {0, 0, 0};
+    double on_surface[3] = {0, 0, 0};  // m
+};
+
 template <int D>
 struct MpmModel {
     Grid<D> grid;
@@ -47,6 +56,7 @@ struct MpmModel {
     PoreWater water;
     // Thin walls the grid's fields are cut along (D = 2; a pile's wall, set by coupling).
     std::vector<FieldCut> field_cuts;
+    std::vector<WaterWall> water_walls;  // grids with water fields only
     bool saturated() const {
         for (const auto& d : drainage)
             if (d.saturated()) return true;
@@ -143,6 +153,7 @@ private:
     void scatter_saturated();
     void update_grid_coupled(double dt);
     void water_to_point(long i, double dt);
+    void hold_water_at_walls(double dt);
     void update_pore_water(double dt);
     double point_wave_speed(long i) const;  // P-wave speed for the stable step, m/s
     template <class Accumulate>
@@ -166,6 +177,7 @@ private:
         return static_cast<long>(m_.particles.size()) * chunk / chunks;
     }
     std::vector<double> external_;  // D per stored node and field: gravity and tractions (equilibrium measure)
+    std::vector<double> wall_normal_;  // D per stored node and field: impermeable walls' normals summed
     std::vector<double> residual_;  // D per stored node and field: unbalanced force after the walls' reaction
     double time_ = 0.0;
     double mass_ = 0.0;

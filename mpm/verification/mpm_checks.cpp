@@ -153,6 +153,21 @@ VerificationCheck footing(const MpmCheckContext& c, const Table& history, int D)
                       "Prandtl: q_u = (2 + pi) c for a strip footing on weightless Tresca soil");
 }
 
+// A rigid circular punch (the FE pile, its head loaded) on an elastic half-space: its
+// settlement under the final head load P against Boussinesq's w = P (1 - nu^2) / (2 a E).
+// Read off the pile's history columns; the settlement counts the contact's penalty
+// compliance (it shrinks with the point size) and the domain's finite depth (stiffer).
+VerificationCheck rigid_punch(const MpmCheckContext& c, const Table& history) {
+    const double a = parameter(c, "punch_radius", "rigid_punch");
+    if (c.model != "linear_elastic") throw std::invalid_argument("rigid_punch is the closed form of a linear_elastic half-space");
+    const double load = column(history, "pile_head_force_N").back();
+    const double settlement = column(history, "pile_head_settlement_m").back();
+    const double tol = c.parameters.count("settlement_tolerance") ? c.parameters.at("settlement_tolerance") : 0.05;
+    const double nu = c.poisson_ratio;
+    return make_check("punch_settlement_m", settlement, load * (1.0 - nu * nu) / (2.0 * a * c.youngs_modulus), tol,
+                      true, "rigid smooth circular punch on an elastic half-space: w = P (1 - nu^2) / (2 a E)");
+}
+
 // An elastic layer loaded by gravity from zero stress between rollers has no lateral
 // strain: sigma_h = nu / (1 - nu) sigma_v in every horizontal direction (the hoop stress
 // too in axisymmetry). Points above a tenth of the largest sigma_v are left out: their
@@ -268,6 +283,7 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
         else if (name == "lateral_stress_ratio") out.push_back(lateral_stress_ratio<D>(c, m));
         else if (name == "nil_step_displacement") out.push_back(nil_step_displacement<D>(m, x0));
         else if (name == "footing_collapse") out.push_back(footing(c, history, D));
+        else if (name == "rigid_punch") out.push_back(rigid_punch(c, history));
         else if (name == "granular_runout") {
             auto v = runout<D>(c, m);
             out.insert(out.end(), v.begin(), v.end());

@@ -24,6 +24,7 @@ struct MpmCheckContext {
     std::string model;     // linear_elastic, mohr_coulomb, ...
     double poisson_ratio = 0.0;
     std::vector<std::array<double, 3>> probes;  // the case's probe positions (output.probes), m
+    double youngs_modulus = 0.0;  // Pa, of the first material
 };
 
 // Shared by the checks: a verification.* parameter (throws naming the check when missing),

@@ -81,8 +81,9 @@ std::vector<double> probe_elevations(const MpmCheckContext& c, const std::vector
 
 }  // namespace
 
-// A layer of height H (verification.height) drained at its top surface (verification.surface)
-// and impermeable below, loaded at t = 0 by verification.load: the excess pressure starts at
+// A layer of height H (verification.height) drained at one face (verification.surface: its
+// top, or its base under an impermeable load such as a pile's toe) and impermeable at the
+// other, loaded at t = 0 by verification.load: the excess pressure starts at
 // u0 = B q with the one-dimensional B = (K_w / n) / (M + K_w / n) and dissipates with
 // c_v = kappa / mu / (1 / M + n / K_w). At T = 0.05, 0.2, 0.5 and 1: the largest error of the
 // probes' excess pressure over u0, and the degree of consolidation from the probes' mean
@@ -110,7 +111,7 @@ std::vector<VerificationCheck> terzaghi_consolidation(const MpmCheckContext& c, 
         double worst = 0.0, mean = 0.0;
         for (std::size_t k = 0; k < z.size(); ++k) {
             const double p = interpolate(t, column(history, "probe" + std::to_string(k) + "_excess_pore_pressure_Pa"), at);
-            const double exact = u0 * terzaghi_excess_pressure((surface - z[k]) / H, T);
+            const double exact = u0 * terzaghi_excess_pressure(std::abs(surface - z[k]) / H, T);
             worst = std::max(worst, std::abs(p - exact) / u0);
             mean += p / u0 / static_cast<double>(z.size());
         }

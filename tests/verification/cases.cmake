@@ -47,6 +47,8 @@ pilempm_case_test(verify_saturated_wave_history_low_k cases/verification/saturat
 pilempm_case_test(verify_hydrostatic_seabed cases/verification/hydrostatic-seabed.yaml verification)
 pilempm_case_test(verify_skempton_b cases/verification/skempton-b.yaml verification)
 pilempm_case_test(verify_skempton_b_compressible cases/verification/skempton-b-compressible.yaml verification)
+# The FE pile in the soil (issue 13): the steel is impermeable to the pore water.
+pilempm_case_test(verify_terzaghi_under_pile cases/verification/terzaghi-under-pile.yaml verification)
 # Full-size runs (label long, not in CI: ctest --test-dir build -L long).
 # Granular column collapse, Mohr-Coulomb: the final height against Lube et al. on grid
 # sequences of three (11-17 min each on one core).
