@@ -575,6 +575,8 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
             }
         }
     }
+    // Nor cross an impermeable body's surface.
+    if (coupled_) hold_water_at_walls(0.0);
 }
 
 template <int D>

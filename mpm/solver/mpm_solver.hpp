@@ -154,6 +154,7 @@ private:
     void update_grid_coupled(double dt);
     void water_to_point(long i, double dt);
     void hold_water_at_walls(double dt);
+    void mark_water_walls();
     void update_pore_water(double dt);
     double point_wave_speed(long i) const;  // P-wave speed for the stable step, m/s
     template <class Accumulate>

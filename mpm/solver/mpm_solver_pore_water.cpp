@@ -188,25 +188,14 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
 // component along the surface's normal, the mixture's momentum Ms v + Mnw w unchanged (a
 // force between the phases, none from the body: the body feels the pore pressure through
 // the contact on the mixture). Nodes further into the soil, and the tangential flow, are
-// left free. A component a boundary prescribes is left to the boundary.
+// left free. A component a boundary prescribes is left to the boundary. dt = 0: the
+// remapped velocities (MUSL) of this step, at the nodes found for its update.
 template <int D>
 void MpmSolver<D>::hold_water_at_walls(double dt) {
     auto& g = m_.grid;
     if (m_.water_walls.empty() || !g.water) return;
     const int nf = g.stored_nodes() * g.fields;
-    wall_normal_.assign(static_cast<std::size_t>(D) * nf, 0.0);
-    double h = g.spacing[0];
-    for (int d = 1; d < D; ++d) h = std::min(h, g.spacing[d]);
-    for (const WaterWall& w : m_.water_walls) {
-        const Stencil<D>& s = stencil_[w.point];
-        for (int k = 0; k < s.count; ++k) {
-            const int e = s.e[k].node;  // a solid entry
-            double behind = 0.0;
-            for (int d = 0; d < D; ++d) behind += (g.position[D * e + d] - w.on_surface[d]) * w.normal[d];
-            if (behind > 0.25 * h) continue;  // inside the soil: free to drain
-            for (int d = 0; d < D; ++d) wall_normal_[D * e + d] += w.normal[d];
-        }
-    }
+    if (dt > 0.0) mark_water_walls();
     const double tiny = empty_node_mass();
     for (int es = 0; es < nf; es += 2) {
         double n[D], norm = 0.0;
@@ -228,9 +217,32 @@ void MpmSolver<D>::hold_water_at_walls(double dt) {
         const double dv = Mnw * relative / (Ms + Mnw), dw = -Ms * relative / (Ms + Mnw);
         for (int d = 0; d < D; ++d) {
             g.velocity[D * es + d] += dv * n[d];
-            g.acceleration[D * es + d] += dv * n[d] / dt;
             g.velocity[D * ew + d] += dw * n[d];
-            g.acceleration[D * ew + d] += dw * n[d] / dt;
+            if (dt > 0.0) {
+                g.acceleration[D * es + d] += dv * n[d] / dt;
+                g.acceleration[D * ew + d] += dw * n[d] / dt;
+            }
+        }
+    }
+}
+
+// The solid entries on or behind a wall (within a quarter cell) of the points against it,
+// with the walls' normals summed there.
+template <int D>
+void MpmSolver<D>::mark_water_walls() {
+    auto& g = m_.grid;
+    const int nf = g.stored_nodes() * g.fields;
+    wall_normal_.assign(static_cast<std::size_t>(D) * nf, 0.0);
+    double h = g.spacing[0];
+    for (int d = 1; d < D; ++d) h = std::min(h, g.spacing[d]);
+    for (const WaterWall& w : m_.water_walls) {
+        const Stencil<D>& s = stencil_[w.point];
+        for (int k = 0; k < s.count; ++k) {
+            const int e = s.e[k].node;  // a solid entry
+            double behind = 0.0;
+            for (int d = 0; d < D; ++d) behind += (g.position[D * e + d] - w.on_surface[d]) * w.normal[d];
+            if (behind > 0.25 * h) continue;  // inside the soil: free to drain
+            for (int d = 0; d < D; ++d) wall_normal_[D * e + d] += w.normal[d];
         }
     }
 }
@@ -299,10 +311,12 @@ template void MpmSolver<2>::update_grid_coupled(double);
 template void MpmSolver<2>::water_to_point(long, double);
 template void MpmSolver<2>::update_pore_water(double);
 template void MpmSolver<2>::hold_water_at_walls(double);
+template void MpmSolver<2>::mark_water_walls();
 template void MpmSolver<3>::scatter_saturated();
 template void MpmSolver<3>::update_grid_coupled(double);
 template void MpmSolver<3>::water_to_point(long, double);
 template void MpmSolver<3>::update_pore_water(double);
 template void MpmSolver<3>::hold_water_at_walls(double);
+template void MpmSolver<3>::mark_water_walls();
 
 }  // namespace pilempm::mpm

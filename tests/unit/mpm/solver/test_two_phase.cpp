@@ -1,5 +1,6 @@
 // The explicit v-w solver: momentum of skeleton and water together is conserved while the
-// Darcy drag exchanges it (to round-off, against the free-body law); the drag relaxes the
+// Darcy drag exchanges it (to round-off, against the free-body law), and while an
+// impermeable wall holds the water against it; the drag relaxes the
 // relative velocity at the rate of its closed form; a point driven to zero effective stress
 // by cyclic undrained shear never produces a NaN, and recovers its effective stress when
 // the pore water drains (the implicit consolidation); the handover between explicit and
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "mpm/implicit/consolidation.hpp"
 #include "mpm/materials/hypoplastic.hpp"
@@ -66,6 +68,50 @@ TEST(TwoPhase, FreeBodyKeepsTheMomentumOfSkeletonAndWater) {
     for (std::size_t i = 0; i < m.particles.size(); ++i) rel = std::max(rel, std::abs(m.particles.w[2 * i] - m.particles.v[2 * i]));
     EXPECT_LT(rel, 0.5 * 0.5);
     for (double x : m.particles.pore_pressure) EXPECT_TRUE(std::isfinite(x));
+}
+
+// An impermeable wall along the block's top (the FE pile's steel, as coupling sets it):
+// at the nodes on it the water moves with the skeleton across it, and the momentum of
+// skeleton and water together is still conserved to round-off (the wall's force is
+// between the phases).
+TEST(TwoPhase, AnImpermeableWallStopsTheFlowAcrossItAndKeepsTheMomentum) {
+    const double hi = 1.6;
+    MpmModel<2> m = saturated_block(1e-3, 0.8, hi);
+    auto& p = m.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.v[2 * i + 1] = -0.1;
+        p.w[2 * i + 0] = -0.2;
+        p.w[2 * i + 1] = 0.4;  // the water flows up, into the wall
+        if (p.x[2 * i + 1] > hi - 0.1) m.water_walls.push_back({static_cast<long>(i), {0.0, -1.0, 0.0}, {0.0, hi, 0.0}});
+    }
+    ASSERT_FALSE(m.water_walls.empty());
+    // The step's momentum, its water weighed as the step weighs it (n rho_w V at its start:
+    // the point's water content follows its volume afterwards).
+    std::vector<double> water(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) water[i] = p.porosity[i] * m.water.density * p.volume[i];
+    auto momentum = [&](int d) {
+        double q = 0.0;
+        for (std::size_t i = 0; i < p.size(); ++i) q += p.mass[i] * p.v[2 * i + d] + water[i] * p.w[2 * i + d];
+        return q;
+    };
+    const double q0[2] = {momentum(0), momentum(1)};
+    MpmSolver<2> s(m);
+    s.step(s.stable_time_step());
+    double scale = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) scale += p.mass[i] * 0.5;
+    for (int d = 0; d < 2; ++d) EXPECT_NEAR(momentum(d), q0[d], 1e-12 * scale) << "axis " << d;
+    // The remapped velocities at the nodes on the wall (those the strain is taken from):
+    // the water's vertical velocity is the skeleton's.
+    const auto& g = m.grid;
+    int held = 0;
+    for (int n = 0; n < g.stored_nodes(); ++n) {
+        const int es = 2 * n, ew = es + 1;
+        if (!g.stored_node_exists(n) || g.mass[es] <= 0.0 || g.mass[ew] <= 0.0) continue;
+        if (g.position[2 * es + 1] < hi - 1e-9) continue;
+        EXPECT_NEAR(g.velocity[2 * ew + 1], g.velocity[2 * es + 1], 1e-12) << "node " << n;
+        ++held;
+    }
+    EXPECT_GT(held, 0);
 }
 
 // Uniform relative motion: the stresses stay zero, and the mixture's momentum fixes the
