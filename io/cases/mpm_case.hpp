@@ -110,6 +110,7 @@ struct MpmCase : CaseFile {
     MpmWaterInput water;
     bool k0_initial_stress = false;
     double surface = 0.0;           // elevation of the ground surface for K0, m
+    double surcharge = 0.0;         // Pa on that surface (the K0 state's sigma'_v there); apply it as a pressure too
     std::vector<MpmStageInput> stages;
     MpmPileInput pile;
     double snapshot_interval = 0.0; // s of simulated time (0: one snapshot per stage end)

@@ -269,7 +269,10 @@ MpmCase read_mpm_case(const std::string& file) {
         }
     if (auto init = root.optional_map("initial_stress")) {
         c.k0_initial_stress = init->choice("type", {"k0", "none"}) == "k0";
-        if (c.k0_initial_stress) c.surface = init->number("surface", {"an elevation in m", [](double) { return true; }});
+        if (c.k0_initial_stress) {
+            c.surface = init->number("surface", {"an elevation in m", [](double) { return true; }});
+            c.surcharge = init->number_or("surcharge", 0.0, non_negative("a pressure in Pa on the surface"));
+        }
         init->finish();
     }
     if (auto out = root.optional_map("output")) {

@@ -220,7 +220,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             return mat.density - (wet && m.water.submerged(z) ? c.water.density : 0.0);
         };
         mpm::apply_k0_stress<D>(p, c.surface, c.gravity, effective_density,
-                                [&](double z) { return mpm::k0_of(material_at(z)); });
+                                [&](double z) { return mpm::k0_of(material_at(z)); }, c.surcharge);
     }
     for (std::size_t i = 0; i < p.size(); ++i)
         m.materials[p.material[i]]->initialise_state(&p.stress[6 * i], p.state.data() + p.state_stride * i);

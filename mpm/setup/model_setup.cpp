@@ -76,13 +76,13 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
 
 template <int D>
 void apply_k0_stress(Particles<D>& p, double surface, double gravity, const std::function<double(double)>& density,
-                     const std::function<double(double)>& k0) {
+                     const std::function<double(double)>& k0, double surcharge) {
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double z = p.x[D * i + D - 1];
         // Integrate rho g over the depth with a fine midpoint rule (layers are piecewise constant).
         const int n = 200;
         const double dz = (surface - z) / n;
-        double sv = 0.0;
+        double sv = -surcharge;
         for (int k = 0; k < n; ++k) sv -= gravity * density(z + (k + 0.5) * dz) * dz;
         const double kk = k0(z);
         double* s = &p.stress[6 * i];
@@ -98,8 +98,8 @@ template int fill_region<3>(const Grid<3>&, Particles<3>&, const std::function<b
 template void apply_boundary<2>(Grid<2>&, int, int, BoundaryKind, double, double, double, bool, double, double, bool);
 template void apply_boundary<3>(Grid<3>&, int, int, BoundaryKind, double, double, double, bool, double, double, bool);
 template void apply_k0_stress<2>(Particles<2>&, double, double, const std::function<double(double)>&,
-                                 const std::function<double(double)>&);
+                                 const std::function<double(double)>&, double);
 template void apply_k0_stress<3>(Particles<3>&, double, double, const std::function<double(double)>&,
-                                 const std::function<double(double)>&);
+                                 const std::function<double(double)>&, double);
 
 }  // namespace pilempm::mpm

@@ -32,9 +32,10 @@ void apply_boundary(Grid<D>& grid, int axis, int side, BoundaryKind kind, double
 
 // K0 stress of horizontally layered ground whose surface is at elevation `surface`
 // (vertical axis D-1): sigma_v = -g int rho dz from the surface down, sigma_h = K0 sigma_v,
-// where density(z) and k0(z) give the layer at elevation z. Tension positive.
+// where density(z) and k0(z) give the layer at elevation z; `surcharge` (Pa, compression
+// positive) adds to sigma_v everywhere (a calibration chamber's top pressure). Tension positive.
 template <int D>
 void apply_k0_stress(Particles<D>& p, double surface, double gravity, const std::function<double(double)>& density,
-                     const std::function<double(double)>& k0);
+                     const std::function<double(double)>& k0, double surcharge = 0.0);
 
 }  // namespace pilempm::mpm
