@@ -49,6 +49,7 @@ void ProbeRecorder<D>::add_columns(std::vector<std::string>& columns) const {
         columns.push_back("probe" + std::to_string(k) + "_velocity_vertical_m_s");
         columns.push_back("probe" + std::to_string(k) + "_stress_vertical_Pa");
         columns.push_back("probe" + std::to_string(k) + "_velocity_x_m_s");
+        columns.push_back("probe" + std::to_string(k) + "_stress_x_Pa");  // radial in axisymmetry
         if (!pore_water_) continue;
         columns.push_back("probe" + std::to_string(k) + "_excess_pore_pressure_Pa");
         columns.push_back("probe" + std::to_string(k) + "_water_velocity_vertical_m_s");
@@ -61,6 +62,7 @@ void ProbeRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>
         row.push_back(m.particles.v[D * p + D - 1]);
         row.push_back(m.particles.stress[6 * p + (D == 2 ? 1 : 2)]);
         row.push_back(m.particles.v[D * p]);
+        row.push_back(m.particles.stress[6 * p]);
         if (!pore_water_) continue;
         row.push_back(m.particles.pore_pressure[p]);
         row.push_back(m.particles.w[D * p + D - 1]);
