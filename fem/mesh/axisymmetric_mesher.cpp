@@ -1,6 +1,7 @@
 #include "fem/mesh/axisymmetric_mesher.hpp"
 
 #include <gmsh.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -121,9 +122,11 @@ class TemporaryFile {
 // One gmsh API session, finalised on every exit path. Errors are logged rather than
 // thrown: an exception thrown from inside the .geo parser leaves gmsh's lexer broken for
 // every later parse in the process.
+// gmsh sets OpenMP's thread count for the whole process to its General.NumThreads (1):
+// the count the process had is put back, or every later MPM step runs on one thread.
 class GmshSession {
    public:
-    GmshSession() {
+    GmshSession() : threads_(omp_get_max_threads()) {
         gmsh::initialize(0, nullptr, false);  // no user gmshrc: the result must not depend on it
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::option::setNumber("General.AbortOnError", 0);
@@ -135,6 +138,7 @@ class GmshSession {
             gmsh::finalize();
         } catch (...) {
         }
+        omp_set_num_threads(threads_);
     }
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
@@ -150,6 +154,9 @@ class GmshSession {
         }
         if (!errors.empty()) throw std::runtime_error(errors);
     }
+
+   private:
+    int threads_;
 };
 
 double signed_area(const std::vector<double>& rz, const int* quad) {
