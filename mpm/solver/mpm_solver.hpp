@@ -179,6 +179,7 @@ private:
     }
     std::vector<double> external_;  // D per stored node and field: gravity and tractions (equilibrium measure)
     std::vector<double> wall_normal_;  // D per stored node and field: impermeable walls' normals summed
+    std::vector<int> wall_entries_;    // the solid entries wall_normal_ marks
     std::vector<double> residual_;  // D per stored node and field: unbalanced force after the walls' reaction
     double time_ = 0.0;
     double mass_ = 0.0;

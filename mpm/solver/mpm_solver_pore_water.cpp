@@ -194,10 +194,9 @@ template <int D>
 void MpmSolver<D>::hold_water_at_walls(double dt) {
     auto& g = m_.grid;
     if (m_.water_walls.empty() || !g.water) return;
-    const int nf = g.stored_nodes() * g.fields;
     if (dt > 0.0) mark_water_walls();
     const double tiny = empty_node_mass();
-    for (int es = 0; es < nf; es += 2) {
+    for (const int es : wall_entries_) {
         double n[D], norm = 0.0;
         const int node = es / g.fields;
         const NodeCondition* cond = g.condition_at[node] >= 0 ? &g.conditions[g.condition_at[node]] : nullptr;
@@ -227,12 +226,13 @@ void MpmSolver<D>::hold_water_at_walls(double dt) {
 }
 
 // The solid entries on or behind a wall (within a quarter cell) of the points against it,
-// with the walls' normals summed there.
+// listed once each, with the walls' normals summed there.
 template <int D>
 void MpmSolver<D>::mark_water_walls() {
     auto& g = m_.grid;
     const int nf = g.stored_nodes() * g.fields;
     wall_normal_.assign(static_cast<std::size_t>(D) * nf, 0.0);
+    wall_entries_.clear();
     double h = g.spacing[0];
     for (int d = 1; d < D; ++d) h = std::min(h, g.spacing[d]);
     for (const WaterWall& w : m_.water_walls) {
@@ -242,7 +242,12 @@ void MpmSolver<D>::mark_water_walls() {
             double behind = 0.0;
             for (int d = 0; d < D; ++d) behind += (g.position[D * e + d] - w.on_surface[d]) * w.normal[d];
             if (behind > 0.25 * h) continue;  // inside the soil: free to drain
-            for (int d = 0; d < D; ++d) wall_normal_[D * e + d] += w.normal[d];
+            bool fresh = true;
+            for (int d = 0; d < D; ++d) {
+                fresh = fresh && wall_normal_[D * e + d] == 0.0;
+                wall_normal_[D * e + d] += w.normal[d];
+            }
+            if (fresh) wall_entries_.push_back(e);
         }
     }
 }
