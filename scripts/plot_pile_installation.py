@@ -5,13 +5,17 @@ pile_load_settlement.png  the jack's force and the soil's resistance split into 
                           shaft, inner shaft and base against the head's settlement.
 pile_tractions.png        normal and shear traction along the outer and inner shaft at
                           the end of the run, against elevation.
+pile_probes.png           with probes: each probe's radial stress over its initial one and
+                          its volumetric strain against its height above the toe over the
+                          pile's radius, h / R (negative while the toe is above it), as
+                          calibration-chamber sensors are shown (Jardine et al. 2013).
 
 Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
 """
 import os
 import sys
 
-from plot_common import read_columns, require_matplotlib, run_main  # noqa: E402
+from plot_common import read_columns, read_header, require_matplotlib, run_main  # noqa: E402
 
 plt = require_matplotlib(__file__)
 
@@ -55,9 +59,53 @@ def plot_tractions(out_dir):
     plt.close(fig)
 
 
+def probe_paths(out_dir):
+    """Per probe: h / R (height above the toe over the outer radius), sigma_r / sigma_r0
+    (compression ratio) and volumetric strain, and the probe's initial radius over R."""
+    history = os.path.join(out_dir, "history.csv")
+    header = read_header(history)
+    probes = sorted({int(c[5:c.index("_")]) for c in header if c.startswith("probe") and c.endswith("_elevation_m")})
+    if not probes or "pile_toe_elevation_m" not in header:
+        return None, []
+    radius = max(read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"), ["radius_m"])["radius_m"])
+    names = ["pile_toe_elevation_m", "time_s"]
+    for k in probes:
+        names += [f"probe{k}_stress_x_Pa", f"probe{k}_volumetric_strain", f"probe{k}_elevation_m"]
+    h = read_columns(history, names)
+    paths = []
+    for k in probes:
+        s0 = h[f"probe{k}_stress_x_Pa"][0]
+        hr = [(z - toe) / radius for z, toe in zip(h[f"probe{k}_elevation_m"], h["pile_toe_elevation_m"])]
+        ratio = [s / s0 if s0 != 0.0 else float("nan") for s in h[f"probe{k}_stress_x_Pa"]]
+        paths.append((k, hr, ratio, h[f"probe{k}_volumetric_strain"]))
+    return radius, paths
+
+
+def plot_probes(out_dir):
+    radius, paths = probe_paths(out_dir)
+    if not paths:
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(10, 6.5), sharey=True)
+    for k, hr, ratio, ev in paths:
+        axes[0].plot(ratio, hr, lw=1.0, label=f"probe {k}")
+        axes[1].plot([100.0 * e for e in ev], hr, lw=1.0, label=f"probe {k}")
+    axes[0].set_xlabel("Radial stress / initial radial stress")
+    axes[1].set_xlabel("Volumetric strain (%), dilation +")
+    axes[0].set_ylabel(f"h / R (height of the probe above the toe, R = {radius * 1e3:.1f} mm)")
+    for ax in axes:
+        ax.axhline(0.0, color="k", lw=0.6)
+        ax.grid(True, alpha=0.4)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("Soil at the probes as the toe passes them")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "pile_probes.png"), dpi=120)
+    plt.close(fig)
+
+
 def plot(out_dir):
     plot_load_settlement(out_dir)
     plot_tractions(out_dir)
+    plot_probes(out_dir)
     return 0
 
 

@@ -46,9 +46,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
                                         std::to_string(2 * offset) + " velocity fields");
         m.field_cuts = {mpm::FieldCut{pile_mid_line(pile_.mesh(), pile_.displacement(), frame_), offset}};
     }
-    modulus_.resize(m.materials.size());
-    for (std::size_t k = 0; k < m.materials.size(); ++k) modulus_[k] = m.materials[k]->p_wave_modulus();
-    contact_.compute(m.particles, m.shape, surface_, dt, modulus_);
+    contact_.compute(m.particles, m.shape, surface_, dt, m.materials);
     // The steel is impermeable: the pore water does not cross the surface the soil touches.
     m.water_walls.clear();
     if (m.grid.water)

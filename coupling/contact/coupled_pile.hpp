@@ -80,7 +80,6 @@ private:
     std::vector<PileHeadControl> head_;
     int substeps_ = 1;
     double contact_dt_ = 1e300;  // s: the step the contact allows (none yet)
-    std::vector<double> modulus_;  // P-wave modulus per material, Pa
     double head_force_ = 0.0;
 };
 

@@ -77,7 +77,7 @@ int PenaltyContact::nearest_segment(const ContactSurface& s, const double* x, do
 }
 
 void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& s, double dt,
-                             const std::vector<double>& modulus) {
+                             const std::vector<std::unique_ptr<mpm::ConstitutiveModel>>& materials) {
     const long n = static_cast<long>(p.size());
     tangential_.resize(n, 0.0);
     segment_.resize(n, -1);
@@ -125,11 +125,15 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         double compliance = 1.0 / p.mass[i];
         if (!s.inverse_mass.empty())
             compliance += ring * ((1.0 - xi) * (1.0 - xi) * s.inverse_mass[s.a[k]] + xi * xi * s.inverse_mass[s.b[k]]);
+        const mpm::ConstitutiveModel& material = *materials[p.material[i]];
+        const double modulus = std::max(material.p_wave_modulus(),
+                                        material.p_wave_modulus_at(&p.stress[6 * i], p.state.data() + p.state_stride * i));
         auto stiffness = [&](const double* dir) {
             const double thickness = 2.0 * (std::abs(half[0] * dir[0] + half[1] * dir[1]) + std::abs(half[2] * dir[0] + half[3] * dir[1]));
-            return settings_.penalty_factor * modulus[p.material[i]] * p.volume[i] / (thickness * thickness);
+            return settings_.penalty_factor * modulus * p.volume[i] / (thickness * thickness);
         };
-        totals_.stable_time_step = std::min(totals_.stable_time_step, 0.5 / std::sqrt(stiffness(nrm) * compliance));
+        const double margin = settings_.stability_margin;
+        totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(stiffness(nrm) * compliance));
         double gap;
         if ((xi <= 0.0 || xi >= 1.0) && rel[0] * nrm[0] + rel[1] * nrm[1] > 0.0) {
             // Past the segment's end, outside: the corner node against the point's domain
@@ -177,7 +181,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             }
         }
         const double kn = stiffness(nrm);
-        totals_.stable_time_step = std::min(totals_.stable_time_step, 0.5 / std::sqrt(kn * compliance));
+        totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(kn * compliance));
         const double fn = -kn * gap;
         // Tangential: a spring on the slip since the last step, capped by Coulomb.
         const double* va = &s.v[2 * s.a[k]];

@@ -6,11 +6,13 @@
 // its external force, the master's on the segment's two nodes by the projection's weights
 // (times `ring`: the master integrates the whole ring, the soil is per radian).
 #include <array>
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "coupling/contact/contact_surface.hpp"
 #include "mpm/grid/shape_functions.hpp"
+#include "mpm/materials/constitutive_model.hpp"
 #include "mpm/points/particles.hpp"
 
 namespace pilempm::coupling {
@@ -18,12 +20,18 @@ namespace pilempm::coupling {
 struct ContactSettings {
     double friction = 0.0;  // mu = tan(delta)
     // The penalty per point from the soil's stiffness, k_n = penalty_factor M V_p / h_p^2
-    // (M its P-wave modulus, V_p its volume, h_p its thickness across the contact): a
-    // contact traction sigma penetrates g = sigma h_p / (penalty_factor M), g / h =
-    // sigma / (2 penalty_factor M) with two points a cell: below 1 % while sigma < 8 % of M. Independent of the step, so the
-    // contact stores and gives back its energy; the step it needs (the point and the
-    // segment's nodes as two masses on the spring, omega dt <= 0.5) is totals().stable_time_step.
+    // (M the point's P-wave modulus in its current state, never below its material's
+    // reference one; V_p its volume, h_p its thickness across the contact): a contact
+    // traction sigma penetrates g = sigma h_p / (penalty_factor M), g / h =
+    // sigma / (2 penalty_factor M) with two points a cell. A soil that stiffens under the
+    // pile's toe stiffens its contact with it, so sigma / M stays near the soil's own strain.
+    // Independent of the step, so the contact stores and gives back its energy; the step it
+    // needs (the point and the segment's nodes as two masses on the spring,
+    // omega dt <= stability_margin) is totals().stable_time_step.
     double penalty_factor = 4.0;
+    // omega dt of the contact's stiffest pair: 1, the margin the soil's CFL of 0.5 leaves
+    // its stiffest grid mode (central differences are stable to 2).
+    double stability_margin = 1.0;
     double tangential_ratio = 1.0;  // k_t / k_n
     double ring = 1.0;              // master force per point force: 2 pi axisymmetric, 1 plane strain
     // A body wished in place: the overlaps found at the first step are taken as the points'
@@ -55,9 +63,10 @@ public:
 
     // From the points at t_n and the surface's current geometry: overwrites the points'
     // external force (zero off contact) and fills nodal_force() (2 per surface node).
-    // modulus: the P-wave modulus of each material (Pa); dt: the step the forces act over.
+    // materials: the points' constitutive models (their stiffness sets the penalty); dt: the
+    // step the forces act over.
     void compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& surface, double dt,
-                 const std::vector<double>& modulus);
+                 const std::vector<std::unique_ptr<mpm::ConstitutiveModel>>& materials);
 
     const ContactSettings& settings() const { return settings_; }
     const std::vector<double>& nodal_force() const { return nodal_force_; }

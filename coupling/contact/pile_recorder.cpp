@@ -7,7 +7,7 @@ namespace pilempm::coupling {
 void PileRecorder::add_columns(std::vector<std::string>& columns) const {
     for (const char* c : {"pile_head_settlement_m", "pile_head_force_N", "outer_shaft_resistance_N",
                           "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
-                          "max_penetration_over_cell"})
+                          "max_penetration_over_cell", "pile_toe_elevation_m"})
         columns.push_back(c);
 }
 
@@ -23,6 +23,11 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     row.push_back(static_cast<double>(t.points_in_contact));
     row.push_back(static_cast<double>(t.points_inside));
     row.push_back(t.max_penetration / std::min(m.grid.spacing[0], m.grid.spacing[1]));
+    // The toe where the surface was placed this step (its lowest node, soil's frame).
+    const auto& x = pile_.surface().x;
+    double toe = 1e300;
+    for (std::size_t k = 1; k < x.size(); k += 2) toe = std::min(toe, x[k]);
+    row.push_back(x.empty() ? pile_.frame().toe_elevation : toe);
 }
 
 }  // namespace pilempm::coupling

@@ -50,6 +50,10 @@ void ProbeRecorder<D>::add_columns(std::vector<std::string>& columns) const {
         columns.push_back("probe" + std::to_string(k) + "_stress_vertical_Pa");
         columns.push_back("probe" + std::to_string(k) + "_velocity_x_m_s");
         columns.push_back("probe" + std::to_string(k) + "_stress_x_Pa");  // radial in axisymmetry
+        // The other horizontal stress: out of plane in 2D (the hoop stress in axisymmetry).
+        columns.push_back("probe" + std::to_string(k) + (D == 2 ? "_stress_hoop_Pa" : "_stress_y_Pa"));
+        columns.push_back("probe" + std::to_string(k) + "_volumetric_strain");  // V / V0 - 1, dilation positive
+        columns.push_back("probe" + std::to_string(k) + "_elevation_m");         // where the point is now
         if (!pore_water_) continue;
         columns.push_back("probe" + std::to_string(k) + "_excess_pore_pressure_Pa");
         columns.push_back("probe" + std::to_string(k) + "_water_velocity_vertical_m_s");
@@ -63,6 +67,9 @@ void ProbeRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>
         row.push_back(m.particles.stress[6 * p + (D == 2 ? 1 : 2)]);
         row.push_back(m.particles.v[D * p]);
         row.push_back(m.particles.stress[6 * p]);
+        row.push_back(m.particles.stress[6 * p + (D == 2 ? 2 : 1)]);
+        row.push_back(m.particles.volume[p] / m.particles.volume0[p] - 1.0);
+        row.push_back(m.particles.x[D * p + D - 1]);
         if (!pore_water_) continue;
         row.push_back(m.particles.pore_pressure[p]);
         row.push_back(m.particles.w[D * p + D - 1]);

@@ -55,15 +55,14 @@ Slide slide(double theta_deg, double mu, double h) {
     settings.friction = mu;
     PenaltyContact contact(settings);
     mpm::MpmSolver<2> soil(m);
-    const std::vector<double> modulus = {m.materials[0]->p_wave_modulus()};
     // The contact's step (its penalty's stability) where shorter than the soil's.
-    contact.compute(m.particles, m.shape, plate, soil.stable_time_step(), modulus);
+    contact.compute(m.particles, m.shape, plate, soil.stable_time_step(), m.materials);
     const double dt = std::min(soil.stable_time_step(), contact.totals().stable_time_step), end = 0.4;
     // First the block settles on the plate under the normal part of its weight (damped),
     // as a geostatic stage would; then the plate tilts.
     m.local_damping = 0.7;
     for (double t = 0.0; t < 0.1; t += dt) {
-        contact.compute(m.particles, m.shape, plate, dt, modulus);
+        contact.compute(m.particles, m.shape, plate, dt, m.materials);
         soil.step(dt);
     }
     m.local_damping = 0.0;
@@ -82,7 +81,7 @@ Slide slide(double theta_deg, double mu, double h) {
     for (double t = 0.0; t < end; t += dt) {
         const double on = t < ramp ? std::pow(std::sin(0.5 * std::numbers::pi * t / ramp), 2) : 1.0;
         m.gravity = {on * kG * std::sin(theta), -kG * std::cos(theta)};
-        contact.compute(m.particles, m.shape, plate, dt, modulus);
+        contact.compute(m.particles, m.shape, plate, dt, m.materials);
         soil.step(dt);
         penetration = std::max(penetration, contact.totals().max_penetration);
         if (t + dt >= 0.5 * end) {

@@ -80,13 +80,12 @@ std::pair<double, double> run(bool cut) {
     settings.ring = full_ring(1.0);
     PenaltyContact contact(settings);
     mpm::MpmSolver<2> soil(m);
-    const std::vector<double> modulus = {m.materials[0]->p_wave_modulus()};
-    contact.compute(m.particles, m.shape, surface, soil.stable_time_step(), modulus);
+    contact.compute(m.particles, m.shape, surface, soil.stable_time_step(), m.materials);
     const double dt = std::min(soil.stable_time_step(), contact.totals().stable_time_step);
     double fastest = 0.0, penetration = 0.0;
     int touched = 0;
     for (double t = 0.0; t < 0.1; t += dt) {
-        contact.compute(m.particles, m.shape, surface, dt, modulus);
+        contact.compute(m.particles, m.shape, surface, dt, m.materials);
         soil.step(dt);
         touched = std::max(touched, contact.totals().points_in_contact);
         penetration = std::max(penetration, contact.totals().max_penetration);
