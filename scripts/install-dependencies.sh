@@ -7,7 +7,7 @@ set -euo pipefail
 # packages install (trilinos-all-dev does not pull them in).
 packages=(build-essential gfortran cmake ninja-build pkg-config libeigen3-dev libhdf5-dev libvtk9-dev
           libgmsh-dev libopenmpi-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev
-          trilinos-all-dev libscotch-dev libptscotch-dev python3-matplotlib)
+          trilinos-all-dev libscotch-dev libptscotch-dev python3-matplotlib python3-yaml)
 
 missing=()
 for p in "${packages[@]}"; do

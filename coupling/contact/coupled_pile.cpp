@@ -74,7 +74,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         pile_.clear_external_force();
         for (int i = 0; i < nodes; ++i) {
             pile_.add_nodal_force(2 * i, f[2 * i]);
-            pile_.add_nodal_force(2 * i + 1, f[2 * i + 1] - mass[2 * i + 1] * gravity_);
+            pile_.add_nodal_force(2 * i + 1, f[2 * i + 1] - mass[2 * i + 1] * gravity_ * gravity_factor_);
         }
         if (head.loaded) pile_.add_head_force(-target);
         pile_.advance_velocity(sub);

@@ -32,7 +32,7 @@ struct PileHeadControl {
 
 class CoupledPile final : public CoupledBody<2> {
 public:
-    // gravity: the pile's own weight, m/s^2 down (n g in a centrifuge). cut_fields: the
+    // gravity: the pile's own weight, m/s^2 down, at a stage's gravity factor of 1. cut_fields: the
     // soil inside and outside an open wall on their own grid fields (a grid of 2 fields, 4
     // with water), the cut along the wall's mid-line moving with it.
     CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity = 0.0,
@@ -55,6 +55,7 @@ public:
         advance(m, dt, stage, quasi_static ? 1e300 : time_in_stage);
     }
     void come_to_rest() override { pile_.stop(); }
+    void set_gravity_factor(double factor) override { gravity_factor_ = factor; }
     std::vector<std::pair<std::string, std::vector<double>>> state() const override;
     void restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) override;
 
@@ -75,6 +76,7 @@ private:
     PenaltyContact contact_;
     PileFrame frame_;
     double gravity_;
+    double gravity_factor_ = 1.0;
     bool cut_fields_;
     ContactSurface surface_;
     std::vector<PileHeadControl> head_;

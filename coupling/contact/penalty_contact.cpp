@@ -59,6 +59,9 @@ void PenaltyContact::bin_segments(const ContactSurface& s, double margin) {
     bin_items_.assign(bin_start_[total], 0);
     std::vector<int> fill(bin_start_.begin(), bin_start_.end() - 1);
     for (int k = 0; k < s.num_segments(); ++k) for_bins(k, [&](int bin) { bin_items_[fill[bin]++] = k; });
+    starting_.assign(s.x.size() / 2, -1);
+    ending_.assign(s.x.size() / 2, -1);
+    for (int k = 0; k < s.num_segments(); ++k) starting_[s.a[k]] = k, ending_[s.b[k]] = k;
 }
 
 int PenaltyContact::nearest_segment(const ContactSurface& s, const double* x, double& xi) const {
@@ -107,7 +110,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     for (long i = 0; i < n; ++i) {
         const double* x = &p.x[2 * i];
         double xi = 0.0;
-        const int k = nearest_segment(s, x, xi);
+        int k = nearest_segment(s, x, xi);
         if (k < 0) {
             release(i);
             continue;
@@ -115,7 +118,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         const double* xa = &s.x[2 * s.a[k]];
         const double* xb = &s.x[2 * s.b[k]];
         const double len = std::hypot(xb[0] - xa[0], xb[1] - xa[1]);
-        const double t[2] = {(xb[0] - xa[0]) / len, (xb[1] - xa[1]) / len};
+        double t[2] = {(xb[0] - xa[0]) / len, (xb[1] - xa[1]) / len};
         double nrm[2] = {t[1], -t[0]};
         const double xs[2] = {xa[0] + xi * (xb[0] - xa[0]), xa[1] + xi * (xb[1] - xa[1])};
         const double rel[2] = {x[0] - xs[0], x[1] - xs[1]};
@@ -153,6 +156,22 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             nrm[0] = sign * (along_e1 ? half[0] / l1 : half[2] / l2);
             nrm[1] = sign * (along_e1 ? half[1] / l1 : half[3] / l2);
             gap = -(along_e1 ? depth1 : depth2);
+            // Both segments at the corner are as near; the force belongs to the one it pushes
+            // off (a point under a closed toe's rim bears on the base, not the shaft), and its
+            // tangent is the direction of slip.
+            const int node = xi <= 0.0 ? s.a[k] : s.b[k];
+            const int other = xi <= 0.0 ? ending_[node] : starting_[node];
+            if (other >= 0) {
+                const double* oa = &s.x[2 * s.a[other]];
+                const double* ob = &s.x[2 * s.b[other]];
+                const double olen = std::hypot(ob[0] - oa[0], ob[1] - oa[1]);
+                const double ot[2] = {(ob[0] - oa[0]) / olen, (ob[1] - oa[1]) / olen};
+                if (ot[1] * nrm[0] - ot[0] * nrm[1] > t[1] * nrm[0] - t[0] * nrm[1]) {
+                    k = other;
+                    xi = node == s.a[k] ? 0.0 : 1.0;
+                    t[0] = ot[0], t[1] = ot[1];
+                }
+            }
         } else {
             const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
             const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);

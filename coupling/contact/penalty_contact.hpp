@@ -104,6 +104,9 @@ private:
     double bin_origin_[2] = {0.0, 0.0}, bin_size_ = 1.0;
     int bins_[2] = {0, 0};
     std::vector<int> bin_start_, bin_items_;
+    // Per node, the segment that starts there and the one that ends there (-1: none): the
+    // two that share a corner.
+    std::vector<int> starting_, ending_;
 };
 
 }  // namespace pilempm::coupling

@@ -27,6 +27,9 @@ struct StageSpec {
     long max_steps = 100000;     // quasi-static
     double tolerance = 1e-4;     // unbalanced force ratio that ends a quasi-static stage
     double local_damping = 0.0;  // Cundall's alpha
+    // Gravity in this stage over the case's: n for n g in a centrifuge (the soil's body
+    // forces, its pore water's and the pile's weight).
+    double gravity_factor = 1.0;
 };
 
 // The time shape of a pulse: constant over its duration, p sin(pi t / T), whose smooth

@@ -16,6 +16,7 @@ StageDriver<D>::StageDriver(mpm::MpmModel<D>& model, std::vector<StageSpec> stag
       settings_(settings),
       observer_(observer ? observer : &quiet_),
       history_("history", {"time_s", "step", "stage"}),
+      gravity_(model.gravity),
       flip_dynamic_(model.flip),
       apic_dynamic_(model.apic) {
     state_.next_snapshot = settings_.snapshot_interval;
@@ -202,6 +203,8 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
         }
         observer_->stage_begin(state_.stage, st);
         m_.local_damping = st.local_damping;
+        for (int d = 0; d < D; ++d) m_.gravity[d] = st.gravity_factor * gravity_[d];
+        if (body_) body_->set_gravity_factor(st.gravity_factor);
         const bool finished = st.consolidation  ? run_consolidation(st, stop)
                               : st.quasi_static ? run_quasi_static(st, stop)
                                                 : run_dynamic(st, stop);

@@ -76,6 +76,7 @@ struct MpmStageInput {
     double pile_force = 0.0;        // N, compression positive
     double pile_rise_time = 0.0;    // s over which the velocity or force changes from the last stage's
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
+    double gravity_factor = 1.0;    // gravity over the case's in this stage (n g in a centrifuge)
 };
 
 // An FE pile in the soil (2D axisymmetric), coupled by penalty contact.

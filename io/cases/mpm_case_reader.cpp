@@ -134,6 +134,7 @@ MpmStageInput read_stage(MapReader m) {
         s.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
                                                              [](double x) { return x >= 0.0 && x < 1.0; }});
     }
+    s.gravity_factor = m.number_or("gravity_factor", 1.0, positive("gravity over the case's (n for n g)"));
     if (!s.consolidation)
         if (auto pm = m.optional_map("pile")) {
             // The pile's head in this stage: driven down at a velocity (0 holds it), or pushed

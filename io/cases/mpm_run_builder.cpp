@@ -243,6 +243,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         s.max_steps = st.max_steps;
         s.tolerance = st.tolerance;
         s.local_damping = st.local_damping;
+        s.gravity_factor = st.gravity_factor;
         s.consolidation = st.consolidation;
         s.steps = st.steps;
         s.step_growth = st.step_growth;

@@ -1,6 +1,7 @@
 #pragma once
-// Progress of a long run on a terminal: stage, simulated time, step, ETA. Silent when
-// stderr is not a terminal (logs stay clean) or with --quiet.
+// Progress of a long run: stage, simulated time, step, ETA. On a terminal one line
+// rewritten every 0.2 s; into a log (nohup, a batch queue) a new line once a minute, so
+// runs shorter than that leave the log clean. Silent with --quiet.
 #include <chrono>
 #include <string>
 
@@ -15,8 +16,12 @@ public:
     void done();
 
 private:
+    bool due(bool finished);
+    void emit(const char* line);
+
     std::string stage_;
     bool enabled_;
+    bool terminal_;
     std::chrono::steady_clock::time_point start_, last_;
     bool printed_ = false;
 };

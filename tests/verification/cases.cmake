@@ -50,6 +50,16 @@ pilempm_case_test(verify_skempton_b cases/verification/skempton-b.yaml verificat
 pilempm_case_test(verify_skempton_b_compressible cases/verification/skempton-b-compressible.yaml verification)
 # The FE pile in the soil (issue 13): the steel is impermeable to the pore water.
 pilempm_case_test(verify_terzaghi_under_pile cases/verification/terzaghi-under-pile.yaml verification)
+# Validation 3 (issue 13): seed 002's shaft capacity, jacked over wished in place, against
+# the paper's trends, the six models of Table 2 at the paper's D/4. Not met yet (the soil
+# leaves the shaft above the toe, README), so not in CI: label long.
+function(pilempm_shaft_capacity_test name size models label)
+  add_test(NAME ${name}
+    COMMAND python3 ${PROJECT_SOURCE_DIR}/scripts/shaft_capacity_study.py --size ${size} --models ${models}
+            --check --threads 1 --pilempm $<TARGET_FILE:pilempm> --out ${CMAKE_BINARY_DIR}/test-output/${name})
+  set_tests_properties(${name} PROPERTIES LABELS ${label} TIMEOUT 36000)
+endfunction()
+pilempm_shaft_capacity_test(long_shaft_capacity full 1,2,3,4,5,6 long)
 # Full-size runs (label long, not in CI: ctest --test-dir build -L long).
 # Granular column collapse, Mohr-Coulomb: the final height against Lube et al. on grid
 # sequences of three (11-17 min each on one core).

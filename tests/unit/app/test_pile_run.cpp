@@ -143,6 +143,20 @@ TEST(PileRun, AClosedEndedPileUnderALoadIsCarriedByTheSoil) {
     fs::remove_all(dir);
 }
 
+// The same solid pile in a stage at 3 g (gravity_factor, as in a centrifuge): the base
+// carries the load and three times the pile's weight, the soil having settled under 3 g.
+TEST(PileRun, AStagesGravityFactorScalesThePilesWeight) {
+    const fs::path dir = fresh_dir("ng");
+    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
+    const auto stages = yaml.find("stages:");
+    yaml.replace(stages, yaml.find("output:") - stages,
+                 "stages:\n  - {name: load, type: quasi_static, max_steps: 6000, tolerance: 1.0e-5, gravity_factor: 3.0,"
+                 " pile: {force: 20.0e3}}\n");
+    auto h = run_text(dir, yaml);
+    EXPECT_NEAR(h["base_resistance_N"].back() / (20.0e3 + 3.0 * kSolidWeight), 1.0, 5e-3);
+    fs::remove_all(dir);
+}
+
 TEST(PileRun, AHeldPileCarriesItsJackAndWeightOnTheSoil) {
     const fs::path dir = fresh_dir("held"), out = dir / "out";
     auto h = run_text(dir, case_text::shipped(kTinyCase));

@@ -125,6 +125,39 @@ TEST(StageDriver, QuasiStaticStageRelaxesToEquilibriumAndEndsAtRest) {
     for (double v : m.particles.v) ASSERT_EQ(v, 0.0);
 }
 
+// A stage's gravity factor (n g in a centrifuge): the roller base of a block carries its
+// weight at 1 g after the first quasi-static stage and n times it after a second at n = 4.
+TEST(StageDriver, GravityFactorScalesTheWeightPerStage) {
+    mpm::MpmModel<2> m = block({0.2, 0.0});
+    m.gravity = {0.0, -9.81};
+    mpm::apply_boundary<2>(m.grid, 1, 0, mpm::BoundaryKind::Roller);
+    std::vector<int> base;
+    for (int n = 0; n < m.grid.num_nodes(); ++n)
+        if (m.grid.ijk(n)[1] == 0) base.push_back(n);
+    StageSpec one;
+    one.name = "1g";
+    one.quasi_static = true;
+    one.local_damping = 0.7;
+    one.tolerance = 1e-7;
+    one.max_steps = 40000;
+    StageSpec four = one;
+    four.name = "4g";
+    four.gravity_factor = 4.0;
+    const double weight = kDensity * 9.81 * kWidth * kHeight;  // per unit thickness
+    auto reaction = [&] {
+        double r = 0.0;
+        for (int n : base) r += m.grid.find_condition(n)->reaction[1];
+        return r;
+    };
+    StageDriver<2> first(m, {one}, {}, {});
+    first.run();
+    EXPECT_NEAR(reaction(), weight, 1e-3 * weight);
+    StageDriver<2> second(m, {four}, {}, {});
+    second.run();
+    EXPECT_NEAR(reaction(), 4.0 * weight, 4e-3 * weight);
+    EXPECT_DOUBLE_EQ(m.gravity[1], -4.0 * 9.81);
+}
+
 namespace {
 
 // Keeps the last checkpoint in memory: everything a resumed run needs.

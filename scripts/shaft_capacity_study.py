@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Validation 3 of issue 13: the shaft capacity of a jacked pile against the same pile
+wished in place, Q_s^f / Q_s^0, for the models of seed 002's Table 2 (Jardine et al. 2013's
+sand, D = 0.8 m, closed-ended):
+
+    shaft_capacity_study.py --out DIR [--size full|reduced] [--models 1,2,...]
+                            [--pilempm build/pilempm] [--threads N]
+
+Every model is derived from cases/jacking/shaft-capacity.yaml (model 2, jacked): the same
+sand, pile and stages with the model's L/D, phi' and OCR, and its wished-in-place twin
+(toe at L, the soil in the steel removed, a nil step, the same D/30 push). Each run goes to
+DIR/<code>-jacked and DIR/<code>-wished (pilempm run); a complete run of the same case
+there, newer than pilempm and the template, is read, not repeated. --size reduced uses
+cells of D/3 instead of the paper's D/4 (the CI size).
+
+DIR/shaft_capacity.csv   per model: Q_s^f, Q_s^0, their ratio, and the mean normal
+                         traction on the shaft after the push, jacked over wished.
+DIR/shaft_capacity.png   the ratios per model (the paper's Figure 22) and the shaft's
+                         normal traction against depth, jacked and wished.
+
+The seed's text gives trends, not Figure 22's numbers: the gain is larger for phi' = 40
+than 20 deg and for L/D 5 than 25, OCR hardly matters, and the jacked shaft's radial
+stress averages some 5 times the initial for phi' 40 and 1.5 for phi' 20. --check exits 1
+unless the phi' trend holds at each L/D run (and the L/D trend where both were run).
+
+Exit status: 0 success (and trends held with --check), 1 a run failed or a trend did
+not hold, 2 bad input, 3 matplotlib not available.
+"""
+import argparse
+import copy
+import csv
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from plot_common import InputError, read_columns, require_matplotlib  # noqa: E402
+
+plt = require_matplotlib(__file__)
+import yaml  # noqa: E402  (after the re-run under the system python, which has python3-yaml)
+
+ROOT = os.path.dirname(HERE)
+TEMPLATE = os.path.join(ROOT, "cases", "jacking", "shaft-capacity.yaml")
+D = 0.8                     # m, the pile's diameter (Table 2)
+WIDTH = 15.0 * D            # the domain: r / R = 30
+BELOW_TOE = 10.0 * D        # sand below the toe's final depth
+ABOVE = 2.0 * D             # empty grid above the surface (heave)
+HEAD_ABOVE = 1.5 * D        # pile above the surface at the end
+VELOCITY = 1.0              # m/s, jacking and the push
+RISE = 0.02                 # s
+PUSH = D / 30.0             # m, the push that mobilises the shaft
+CELLS_PER_D = {"full": 4, "reduced": 3}   # the paper's D/4; D/3 in CI
+# Table 2 of seed 002: model -> (L/D, phi' in degrees, OCR).
+MODELS = {1: (5, 20.0, 1.0), 2: (5, 40.0, 1.0), 3: (25, 20.0, 1.0), 4: (25, 40.0, 1.0),
+          5: (5, 40.0, 8.0), 6: (25, 40.0, 8.0)}
+
+
+def code(model):
+    ld, phi, ocr = MODELS[model]
+    return f"{ld}-{phi:g}-{ocr:g}"
+
+
+def variant(template, model, jacked, cell):
+    """The case of `model` (jacked, or wished in place) on cells of `cell` metres."""
+    ld, phi, ocr = MODELS[model]
+    c = copy.deepcopy(template)
+    length = ld * D
+    depth = length + BELOW_TOE
+    nx, ny_soil, ny_above = round(WIDTH / cell), round(depth / cell), round(ABOVE / cell)
+    surface = round(ny_soil * cell, 9)
+    c["title"] = (f"Validation 3, model {model} ({code(model)}): L/D {ld}, phi' {phi:g} deg, OCR {ocr:g}, "
+                  + ("jacked" if jacked else "wished in place"))
+    c["grid"] = {"origin": [0.0, 0.0], "size": [round(nx * cell, 9), round((ny_soil + ny_above) * cell, 9)],
+                 "cells": [nx, ny_soil + ny_above]}
+    sand = c["materials"][0]
+    sand["friction_angle"], sand["ocr"] = phi, ocr
+    c["regions"][0]["box"] = {"min": [0.0, 0.0], "max": [round(nx * cell, 9), surface]}
+    c["initial_stress"]["surface"] = surface
+    pile = c["pile"]
+    pile["segments"][0]["length"] = length + HEAD_ABOVE
+    pile["element_size"] = cell
+    by_name = {s["name"]: s for s in c["stages"]}
+    push = dict(by_name["push"], duration=PUSH / VELOCITY + RISE / 2.0)
+    push["pile"] = {"velocity": VELOCITY, "rise_time": RISE}
+    if jacked:
+        pile["toe_elevation"] = surface
+        jack = dict(by_name["jack"], duration=length / VELOCITY + RISE / 2.0)
+        jack["pile"] = {"velocity": VELOCITY, "rise_time": RISE}
+        c["stages"] = [by_name["geostatic"], jack, by_name["hold"], push]
+        c["output"]["snapshot_interval"] = length / VELOCITY / 16.0
+    else:
+        pile["toe_elevation"] = surface - length
+        pile["wished_in_place"] = True
+        nil = dict(by_name["geostatic"], name="nil")
+        c["stages"] = [nil, push]
+        c["output"]["snapshot_interval"] = push["duration"] / 4.0
+    return c
+
+
+def up_to_date(out_dir, case, pilempm):
+    """A complete run of this very case, newer than the executable and the template."""
+    history, case_file = os.path.join(out_dir, "history.csv"), out_dir + ".yaml"
+    if not (os.path.exists(history) and os.path.exists(case_file)):
+        return False
+    with open(case_file) as f:
+        if yaml.safe_load(f) != case:
+            return False
+    return os.path.getmtime(history) > max(os.path.getmtime(pilempm), os.path.getmtime(TEMPLATE))
+
+
+def run_case(case, out_dir, pilempm, threads):
+    """Runs the case into out_dir unless an up-to-date run is there; returns out_dir."""
+    if up_to_date(out_dir, case, pilempm):
+        return out_dir
+    os.makedirs(os.path.dirname(out_dir), exist_ok=True)
+    case_file = out_dir + ".yaml"
+    with open(case_file, "w") as f:
+        yaml.safe_dump(case, f, default_flow_style=None, sort_keys=False, width=100)
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    print(f"running {os.path.basename(out_dir)} ...", flush=True)
+    r = subprocess.run([pilempm, "run", case_file, "--out", out_dir, "--quiet"], env=env)
+    if r.returncode != 0:
+        raise RuntimeError(f"{case_file}: pilempm exited {r.returncode}")
+    return out_dir
+
+
+def shaft_capacity(out_dir):
+    """Q_s: the outer shaft's mean resistance over the second half of the push (the last
+    stage), when the whole shaft slips; a mean, as the toe's chatter rides on it. N."""
+    h = read_columns(os.path.join(out_dir, "history.csv"), ["stage", "outer_shaft_resistance_N"])
+    last = max(h["stage"])
+    push = [q for s, q in zip(h["stage"], h["outer_shaft_resistance_N"]) if s == last]
+    half = push[len(push) // 2:]
+    if not half:
+        raise InputError(f"{out_dir}/history.csv: no rows in the push stage")
+    return sum(half) / len(half)
+
+
+def shaft_tractions(out_dir):
+    t = read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"),
+                     ["elevation_m", "length_m", "normal_traction_compression_Pa"])
+    return list(zip(t["elevation_m"], t["length_m"], t["normal_traction_compression_Pa"]))
+
+
+def mean_traction(rows, top):
+    """Length-weighted mean normal traction over the embedded shaft (below `top`)."""
+    inside = [(l, s) for z, l, s in rows if z < top]
+    total = sum(l for l, _ in inside)
+    return sum(l * s for l, s in inside) / total if total > 0 else float("nan")
+
+
+def surface_of(out_dir):
+    with open(out_dir + ".yaml") as f:
+        return yaml.safe_load(f)["initial_stress"]["surface"]
+
+
+def study(args):
+    with open(TEMPLATE) as f:
+        template = yaml.safe_load(f)
+    cell = D / CELLS_PER_D[args.size]
+    results = []
+    for m in args.models:
+        runs = {}
+        for jacked in (True, False):
+            name = f"{code(m)}-{'jacked' if jacked else 'wished'}"
+            runs[jacked] = run_case(variant(template, m, jacked, cell), os.path.join(args.out, name), args.pilempm,
+                                    args.threads)
+        qf, q0 = shaft_capacity(runs[True]), shaft_capacity(runs[False])
+        top = surface_of(runs[True])
+        tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
+        results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1], "ocr": MODELS[m][2],
+                        "qf": qf, "q0": q0, "ratio": qf / q0, "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top),
+                        "tf": tf, "t0": t0, "top": top})
+    write_table(args.out, results)
+    plot(args.out, results, args.size)
+    for r in results:
+        print(f"model {r['model']} ({r['code']}): Q_s^f = {r['qf'] / 1e3:.1f} kN, Q_s^0 = {r['q0'] / 1e3:.1f} kN, "
+              f"ratio {r['ratio']:.2f}; shaft normal traction jacked / wished {r['sigma_ratio']:.2f}")
+    return check(results) if args.check else 0
+
+
+def write_table(out_dir, results):
+    with open(os.path.join(out_dir, "shaft_capacity.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "Qs_jacked_kN", "Qs_wished_kN", "Qs_ratio",
+                    "shaft_normal_traction_ratio"])
+        for r in results:
+            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], f"{r['qf'] / 1e3:.3f}",
+                        f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['sigma_ratio']:.4f}"])
+
+
+def plot(out_dir, results, size):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5.5))
+    ax1.bar([str(r["model"]) for r in results], [r["ratio"] for r in results], color="tab:blue")
+    for i, r in enumerate(results):
+        ax1.text(i, r["ratio"], f"{r['ratio']:.2f}", ha="center", va="bottom", fontsize=9)
+    ax1.axhline(1.0, color="k", lw=0.8)
+    ax1.set_xlabel("model (Table 2: " + ", ".join(f"{r['model']} = {r['code']}" for r in results) + ")", fontsize=8)
+    ax1.set_ylabel("Q_s^f / Q_s^0")
+    ax1.set_title(f"Shaft capacity, jacked over wished in place (cells of D/{CELLS_PER_D[size]})")
+    for r in results:
+        for rows, style, label in ((r["tf"], "-", "jacked"), (r["t0"], "--", "wished")):
+            pts = sorted((r["top"] - z, s / 1e3) for z, _, s in rows if z < r["top"])
+            ax2.plot([s for _, s in pts], [d for d, _ in pts], style, label=f"{r['code']} {label}")
+    ax2.invert_yaxis()
+    ax2.set_xlabel("normal traction on the shaft after the push (kPa)")
+    ax2.set_ylabel("depth (m)")
+    ax2.grid(True, alpha=0.4)
+    ax2.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "shaft_capacity.png"), dpi=120)
+    plt.close(fig)
+
+
+def check(results):
+    """The seed's trends: phi' 40 gains more than 20 at each L/D; L/D 5 more than 25."""
+    by = {(r["ld"], r["phi"], r["ocr"]): r["ratio"] for r in results}
+    failed = []
+    for ld in (5, 25):
+        if (ld, 20.0, 1.0) in by and (ld, 40.0, 1.0) in by and not by[(ld, 40.0, 1.0)] > by[(ld, 20.0, 1.0)]:
+            failed.append(f"L/D {ld}: phi' 40 ratio {by[(ld, 40.0, 1.0)]:.2f} not above phi' 20's {by[(ld, 20.0, 1.0)]:.2f}")
+    for phi in (20.0, 40.0):
+        if (5, phi, 1.0) in by and (25, phi, 1.0) in by and not by[(5, phi, 1.0)] > by[(25, phi, 1.0)]:
+            failed.append(f"phi' {phi:g}: L/D 5 ratio {by[(5, phi, 1.0)]:.2f} not above L/D 25's {by[(25, phi, 1.0)]:.2f}")
+    for r in results:
+        if not r["ratio"] > 1.0:
+            failed.append(f"model {r['model']}: jacking lowered the shaft capacity (ratio {r['ratio']:.2f})")
+    for f in failed:
+        print("TREND NOT MET: " + f)
+    return 1 if failed else 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description="Validation 3: Q_s^f / Q_s^0 of seed 002's Table 2")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--size", choices=("full", "reduced"), default="full")
+    ap.add_argument("--models", default="1,2,3,4,5,6")
+    ap.add_argument("--pilempm", default=os.path.join(ROOT, "build", "pilempm"))
+    ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--check", action="store_true")
+    args = ap.parse_args()
+    try:
+        args.models = [int(m) for m in args.models.split(",")]
+    except ValueError:
+        raise InputError(f"--models: expected model numbers 1-6 separated by commas, got '{args.models}'")
+    bad = [m for m in args.models if m not in MODELS]
+    if bad:
+        raise InputError(f"--models: no model {bad[0]} in Table 2 (1-6)")
+    return study(args)
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except (OSError, ValueError, KeyError, InputError, yaml.YAMLError) as e:
+        print(f"shaft_capacity_study.py: {e}", file=sys.stderr)
+        sys.exit(2)
+    except RuntimeError as e:
+        print(f"shaft_capacity_study.py: {e}", file=sys.stderr)
+        sys.exit(1)

@@ -1,0 +1,78 @@
+// A point that meets a closed toe at its rim touches two segments at once (the base and the
+// shaft end at the same node, equally near). The force belongs to the face it pushes off:
+// a point under the rim bears on the base (toe), one beside it on the shaft (outer),
+// whichever of the two segments the search met first.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "coupling/contact/penalty_contact.hpp"
+#include "mpm/materials/constitutive_model.hpp"
+
+using namespace pilempm;
+using namespace pilempm::coupling;
+
+namespace {
+
+constexpr double kHalf = 0.05, kOverlap = 1e-3;  // m: the point's half-size, its overlap
+
+// The unit square [0, 1]^2 (a pile with its toe at y = 0), counter-clockwise, its segments
+// listed forwards or backwards.
+ContactSurface square(bool reversed) {
+    ContactSurface s;
+    s.x = {0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0};
+    s.v.assign(8, 0.0);
+    const int a[4] = {0, 1, 2, 3}, b[4] = {1, 2, 3, 0};
+    const SurfaceSide side[4] = {SurfaceSide::Toe, SurfaceSide::Outer, SurfaceSide::Head, SurfaceSide::Inner};
+    for (int j = 0; j < 4; ++j) {
+        const int k = reversed ? 3 - j : j;
+        s.add_segment(a[k], b[k], side[k]);
+    }
+    return s;
+}
+
+// One point at x by the corner (1, 0): the contact's totals and the point's force.
+ContactTotals touch(const double* x, bool reversed, double force[2]) {
+    std::vector<std::unique_ptr<mpm::ConstitutiveModel>> materials;
+    materials.push_back(std::make_unique<mpm::LinearElastic>(20e6, 0.3));
+    mpm::Particles<2> points;
+    const double lengths[2] = {2 * kHalf, 2 * kHalf};
+    points.add(x, 1.0, 4 * kHalf * kHalf, lengths, 0);
+    points.resize_state(materials[0]->num_state());
+    PenaltyContact contact(ContactSettings{});
+    contact.compute(points, mpm::ShapeKind::GIMP, square(reversed), 1e-6, materials);
+    force[0] = points.external_force[0];
+    force[1] = points.external_force[1];
+    EXPECT_EQ(contact.totals().points_in_contact, 1);
+    return contact.totals();
+}
+
+const int kToe = static_cast<int>(SurfaceSide::Toe), kOuter = static_cast<int>(SurfaceSide::Outer);
+
+}  // namespace
+
+TEST(ContactCorner, APointUnderTheRimBearsOnTheBase) {
+    const double x[2] = {1.0 + 0.2 * kHalf, -kHalf + kOverlap};  // below, a little outside
+    for (bool reversed : {false, true}) {
+        double f[2];
+        const ContactTotals t = touch(x, reversed, f);
+        EXPECT_LT(f[1], 0.0) << "pushed down";
+        EXPECT_EQ(f[0], 0.0);
+        EXPECT_GT(t.force_by_side[kToe][1], 0.0) << "the base carries it, segments reversed: " << reversed;
+        EXPECT_EQ(t.force_by_side[kOuter][0], 0.0);
+        EXPECT_EQ(t.force_by_side[kOuter][1], 0.0);
+    }
+}
+
+TEST(ContactCorner, APointBesideTheRimPushesOnTheShaft) {
+    const double x[2] = {1.0 + kHalf - kOverlap, -0.2 * kHalf};  // outside, a little below
+    for (bool reversed : {false, true}) {
+        double f[2];
+        const ContactTotals t = touch(x, reversed, f);
+        EXPECT_GT(f[0], 0.0) << "pushed out";
+        EXPECT_EQ(f[1], 0.0);
+        EXPECT_LT(t.force_by_side[kOuter][0], 0.0) << "the shaft carries it, segments reversed: " << reversed;
+        EXPECT_EQ(t.force_by_side[kToe][0], 0.0);
+        EXPECT_EQ(t.force_by_side[kToe][1], 0.0);
+    }
+}
