@@ -44,7 +44,11 @@ def plot_tractions(out_dir):
     fig, axes = plt.subplots(1, 2, figsize=(9, 6), sharey=True)
     names = ["elevation_m", "normal_traction_compression_Pa", "shear_traction_Pa"]
     for side, style in (("outer", "-"), ("inner", "--")):
-        t = read_columns(os.path.join(out_dir, f"pile_tractions_{side}.csv"), names)
+        path = os.path.join(out_dir, f"pile_tractions_{side}.csv")
+        with open(path) as f:
+            if sum(1 for _ in f) < 2:  # a closed-ended pile has no inner shaft
+                continue
+        t = read_columns(path, names)
         axes[0].plot([v / 1e3 for v in t["normal_traction_compression_Pa"]], t["elevation_m"], style, label=side)
         axes[1].plot([v / 1e3 for v in t["shear_traction_Pa"]], t["elevation_m"], style, label=side)
     axes[0].set_xlabel("Normal traction (kPa), compression +")
