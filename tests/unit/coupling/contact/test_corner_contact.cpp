@@ -47,32 +47,29 @@ ContactTotals touch(const double* x, bool reversed, double force[2]) {
     return contact.totals();
 }
 
-const int kToe = static_cast<int>(SurfaceSide::Toe), kOuter = static_cast<int>(SurfaceSide::Outer);
+// The point at x, whichever order the segments come in: pushed along `axis` (0: r, 1: z)
+// with `sign`, the whole force charged to `charged` and none to `spared`.
+void expect_charged(const double* x, int axis, double sign, SurfaceSide charged, SurfaceSide spared) {
+    const int on = static_cast<int>(charged), off = static_cast<int>(spared);
+    for (bool reversed : {false, true}) {
+        double f[2];
+        const ContactTotals t = touch(x, reversed, f);
+        EXPECT_GT(sign * f[axis], 0.0) << "the push's direction, segments reversed: " << reversed;
+        EXPECT_EQ(f[1 - axis], 0.0);
+        EXPECT_LT(sign * t.force_by_side[on][axis], 0.0) << "the side it bears on, segments reversed: " << reversed;
+        EXPECT_EQ(t.force_by_side[off][0], 0.0);
+        EXPECT_EQ(t.force_by_side[off][1], 0.0);
+    }
+}
 
 }  // namespace
 
 TEST(ContactCorner, APointUnderTheRimBearsOnTheBase) {
     const double x[2] = {1.0 + 0.2 * kHalf, -kHalf + kOverlap};  // below, a little outside
-    for (bool reversed : {false, true}) {
-        double f[2];
-        const ContactTotals t = touch(x, reversed, f);
-        EXPECT_LT(f[1], 0.0) << "pushed down";
-        EXPECT_EQ(f[0], 0.0);
-        EXPECT_GT(t.force_by_side[kToe][1], 0.0) << "the base carries it, segments reversed: " << reversed;
-        EXPECT_EQ(t.force_by_side[kOuter][0], 0.0);
-        EXPECT_EQ(t.force_by_side[kOuter][1], 0.0);
-    }
+    expect_charged(x, 1, -1.0, SurfaceSide::Toe, SurfaceSide::Outer);
 }
 
 TEST(ContactCorner, APointBesideTheRimPushesOnTheShaft) {
     const double x[2] = {1.0 + kHalf - kOverlap, -0.2 * kHalf};  // outside, a little below
-    for (bool reversed : {false, true}) {
-        double f[2];
-        const ContactTotals t = touch(x, reversed, f);
-        EXPECT_GT(f[0], 0.0) << "pushed out";
-        EXPECT_EQ(f[1], 0.0);
-        EXPECT_LT(t.force_by_side[kOuter][0], 0.0) << "the shaft carries it, segments reversed: " << reversed;
-        EXPECT_EQ(t.force_by_side[kToe][0], 0.0);
-        EXPECT_EQ(t.force_by_side[kToe][1], 0.0);
-    }
+    expect_charged(x, 0, 1.0, SurfaceSide::Outer, SurfaceSide::Toe);
 }
