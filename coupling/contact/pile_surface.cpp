@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace pilempm::coupling {
 
@@ -31,6 +32,8 @@ ContactSurface pile_contact_surface(const fem::PileMesh& mesh) {
     s.v.assign(mesh.coordinates.size(), 0.0);
     double r_max = 0.0;
     for (int i = 0; i < mesh.num_nodes(); ++i) r_max = std::max(r_max, mesh.coordinates[2 * i]);
+    std::vector<bool> on_toe(mesh.num_nodes(), false);
+    for (int node : mesh.toe_nodes) on_toe[node] = true;
     for (const auto& [key, edge] : once) {
         const double* xa = &mesh.coordinates[2 * edge.first];
         const double* xb = &mesh.coordinates[2 * edge.second];
@@ -38,8 +41,10 @@ ContactSurface pile_contact_surface(const fem::PileMesh& mesh) {
         if (xa[0] <= 1e-12 * r_max && xb[0] <= 1e-12 * r_max) continue;
         const double tr = xb[0] - xa[0], tz = xb[1] - xa[1];
         const double nr = tz, nz = -tr;  // outward: to the right of a -> b
+        // The toe row's edges are the toe whatever their slope (a cone's face is steeper than 45 deg).
         SurfaceSide side;
-        if (std::abs(nr) >= std::abs(nz)) side = nr > 0.0 ? SurfaceSide::Outer : SurfaceSide::Inner;
+        if (on_toe[edge.first] && on_toe[edge.second]) side = SurfaceSide::Toe;
+        else if (std::abs(nr) >= std::abs(nz)) side = nr > 0.0 ? SurfaceSide::Outer : SurfaceSide::Inner;
         else side = nz > 0.0 ? SurfaceSide::Head : SurfaceSide::Toe;
         s.add_segment(edge.first, edge.second, side);
     }

@@ -88,6 +88,7 @@ struct MpmPileInput {
     double penalty_factor = 4.0;    // k_n = factor x M V_p / h_p^2 (coupling/contact/penalty_contact.hpp)
     bool self_weight = true;        // the pile's weight under the case's gravity
     bool wished_in_place = false;   // starts embedded: the soil in its wall removed, overlaps ignored
+    double toe_cone_angle = 0.0;    // degrees: a closed toe's conical tip, its apex at toe_elevation (0: flat)
     // Open at the toe (a tube; segments run head to toe), else closed-ended (solid there).
     bool open_ended() const {
         return !pile.segments.empty() && pile.segments.back().wall_thickness < 0.5 * pile.segments.back().outer_diameter;

@@ -219,6 +219,10 @@ MpmCase read_mpm_case(const std::string& file) {
         p.self_weight = pm->boolean_or("self_weight", true);
         p.wished_in_place = pm->boolean_or("wished_in_place", false);
         c.lines["pile.toe_elevation"] = pm->line_of("toe_elevation");
+        if (pm->has("toe_cone_angle")) {
+            p.toe_cone_angle = pm->number("toe_cone_angle", in_open_range(0.0, 180.0, "a cone's apex angle in degrees"));
+            c.lines["pile.toe_cone_angle"] = pm->line_of("toe_cone_angle");
+        }
         const int model_line = pm->line_of("model");
         read_pile_section(std::move(*pm), p.pile, c, false);
         if (p.pile.model != PileModel::Axisymmetric)

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/conventions.hpp"
 #include "fem/mesh/axisymmetric_mesher.hpp"
+#include "fem/mesh/conical_toe.hpp"
 #include "io/yaml/case_error.hpp"
 
 namespace pilempm::io {
@@ -129,6 +131,14 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
     if (c.pile.present) {
         // The soil where the pile's steel is: removed (wished in place), else an error.
         const fem::PileGeometry g = fem::make_pile_geometry(c.pile.pile.segments, c.pile.pile.taper_ratio);
+        // A conical toe's steel reaches r = R z / h below its shoulder (z = h).
+        const double cone_height = c.pile.toe_cone_angle > 0.0
+                                       ? g.outer_radius_at(0.0) / std::tan(0.5 * c.pile.toe_cone_angle * std::numbers::pi / 180.0)
+                                       : 0.0;
+        auto outer_at = [&](double z) {
+            const double ro = g.outer_radius_at(z);
+            return z < cone_height ? ro * std::max(z, 0.0) / cone_height : ro;
+        };
         // Overlapping: a point's domain reaches into the steel (its centre in it: removed).
         std::vector<char> keep(m.particles.size(), 1);
         std::size_t overlapping = 0;
@@ -139,9 +149,10 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             const double touch = 1e-9 * hz;  // a domain only touching the steel does not overlap it
             if (z + hz <= touch || z - hz >= g.length() - touch) continue;
             const double zc = std::clamp(z, 0.0, g.length());
-            if (r + hr <= g.inner_radius_at(zc) + touch || r - hr >= g.outer_radius_at(zc) - touch) continue;
+            const double widest = outer_at(std::clamp(z + hz, 0.0, g.length()));  // over the domain's height
+            if (r + hr <= g.inner_radius_at(zc) + touch || r - hr >= widest - touch) continue;
             ++overlapping;
-            if (z >= 0.0 && z <= g.length() && r >= g.inner_radius_at(z) && r <= g.outer_radius_at(z)) keep[i] = 0;
+            if (z >= 0.0 && z <= g.length() && r >= g.inner_radius_at(z) && r <= outer_at(z)) keep[i] = 0;
         }
         if (overlapping > 0 && !c.pile.wished_in_place)
             throw CaseError(c.file, c.line_of("pile.toe_elevation"), "pile.toe_elevation",
@@ -260,6 +271,18 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             const fem::PileGeometry geometry = fem::make_pile_geometry(c.pile.pile.segments, c.pile.pile.taper_ratio);
             pile.mesh = fem::mesh_axisymmetric_wall(geometry, c.pile.pile.element_size, c.pile.pile.radial_divisions,
                                                     fem::default_pile_wall_geo());
+            if (c.pile.toe_cone_angle > 0.0) {
+                if (c.pile.open_ended())
+                    throw CaseError(c.file, c.line_of("pile.toe_cone_angle"), "pile.toe_cone_angle",
+                                    "a closed-ended pile (a solid last segment: wall_thickness = outer_diameter / 2)",
+                                    "an open-ended pile");
+                try {
+                    fem::shape_conical_toe(pile.mesh, c.pile.toe_cone_angle);
+                } catch (const std::invalid_argument& e) {
+                    throw CaseError(c.file, c.line_of("pile.toe_cone_angle"), "pile.toe_cone_angle",
+                                    "a cone the pile is long enough for", e.what());
+                }
+            }
             pile.steel = c.pile.pile.steel;
             pile.contact.friction = c.pile.friction;
             pile.contact.penalty_factor = c.pile.penalty_factor;

@@ -100,3 +100,37 @@ TEST(PileInput, AValidCaseBuildsTheWallTheContactAndAFieldEachSide) {
     EXPECT_TRUE(run.pile.heads[1].driven);
     EXPECT_NEAR(run.pile.gravity, 9.81, 1e-12);
 }
+
+// A conical toe: closed-ended piles only, one the pile is long enough for; wished in place,
+// the soil in the cone's steel goes and the soil round it stays.
+TEST(PileInput, AConicalToeNeedsAClosedPileAndKeepsTheSoilRoundTheCone) {
+    const std::string cone = replaced(jacking(), "  friction: 0.4", "  toe_cone_angle: 60.0\n  friction: 0.4");
+    const auto open = error_of(cone, "open_cone");
+    EXPECT_NE(open.find("pile.toe_cone_angle"), std::string::npos) << open;
+    EXPECT_NE(open.find("closed-ended"), std::string::npos) << open;
+    const std::string closed = replaced(cone, "outer_diameter: 0.4, wall_thickness: 0.02", "outer_diameter: 0.4, wall_thickness: 0.2");
+    const auto sharp = error_of(replaced(closed, "toe_cone_angle: 60.0", "toe_cone_angle: 10.0"), "sharp_cone");  // 2 h = 4.6 m
+    EXPECT_NE(sharp.find("pile.toe_cone_angle"), std::string::npos) << sharp;
+    EXPECT_NE(sharp.find("too short"), std::string::npos) << sharp;
+    const auto flat = error_of(replaced(closed, "toe_cone_angle: 60.0", "toe_cone_angle: 180.0"), "flat_cone");
+    EXPECT_NE(flat.find("pile.toe_cone_angle"), std::string::npos) << flat;
+    // Wished in place 1 m deep: the cone's apex at z = 5, its shoulder h = R / tan 30 above.
+    const std::string embedded = replaced(replaced(closed, "toe_elevation: 6.0", "toe_elevation: 5.0"), "  friction: 0.4",
+                                          "  wished_in_place: true\n  friction: 0.4");
+    const fs::path file = write(embedded, "cone");
+    const auto run = pio::build_mpm_run<2>(pio::read_mpm_case(file.string()));
+    fs::remove(file);
+    const double R = 0.2, h = R * std::sqrt(3.0);
+    int beside_cone = 0;
+    const auto& p = run.model.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r = p.x[2 * i], z = p.x[2 * i + 1] - 5.0;
+        const double steel = z < 0.0 || z > 1.0 ? 0.0 : z < h ? R * z / h : R;
+        EXPECT_FALSE(r < steel) << "a point left in the steel at " << r << ", " << z;
+        if (z > 0.0 && z < h && r < R) ++beside_cone;
+    }
+    EXPECT_GT(beside_cone, 0);
+    double lowest = 1e300;
+    for (int node : run.pile.mesh.toe_nodes) lowest = std::min(lowest, run.pile.mesh.z(node));
+    EXPECT_EQ(lowest, 0.0);  // the apex is the toe
+}
