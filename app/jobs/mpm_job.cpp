@@ -19,6 +19,7 @@
 #include "io/writers/json_writer.hpp"
 #include "io/writers/mpm_run_output.hpp"
 #include "io/writers/staged_directory.hpp"
+#include "io/writers/terminal_progress.hpp"
 #include "mpm/analysis/granular_collapse.hpp"
 #include "io/writers/pile_contact_output.hpp"
 #include "io/writers/plots.hpp"
@@ -58,11 +59,37 @@ mpm::MpmCheckContext check_context(const io::MpmCase& c) {
             c.probes,             first.youngs_modulus};
 }
 
-// The case on a grid `factor` times finer along every axis, run with no output, and its
-// checks; their names say the grid.
+// A rerun's progress, as the main run's, with the grid in its name.
+template <int D>
+class GridProgress final : public coupling::StageObserver<D> {
+public:
+    GridProgress(std::string grid, bool quiet) : grid_(std::move(grid)), quiet_(quiet) {}
+    void stage_begin(int, const coupling::StageSpec& spec) override {
+        progress_ = std::make_unique<io::TerminalProgress>("grid " + grid_ + ", mpm stage '" + spec.name + "'", !quiet_);
+    }
+    void stage_progress(const coupling::StageSpec& spec, const coupling::DriverState& state,
+                        const mpm::MpmSolver<D>& solver) override {
+        if (spec.quasi_static) progress_->update_count(state.stage_steps - 1, spec.max_steps, "steps (quasi-static)");
+        else progress_->update(solver.time() - state.stage_start_time, spec.duration, solver.steps());
+    }
+    void stage_end(int, const coupling::StageSpec&, const coupling::StageReport&) override {
+        if (progress_) progress_->done();
+        progress_.reset();
+    }
+
+private:
+    std::string grid_;
+    bool quiet_;
+    std::unique_ptr<io::TerminalProgress> progress_;
+};
+
+// The case on a grid `factor` times finer along every axis (the pile's mesh with it), run
+// with no output but progress, and its checks, their names saying the grid; nothing, with
+// `stopped` set, when a stop request (SIGINT, SIGTERM) ends the rerun early.
 template <int D>
 std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::MpmCheckContext& context,
-                                              double factor, std::string& grid) {
+                                              double factor, std::string& grid, bool quiet,
+                                              const coupling::StopRequest* stop, bool& stopped) {
     io::MpmCase refined = c;
     for (int d = 0; d < D; ++d)
         if (c.refined_axes[d]) refined.cells[d] = static_cast<int>(std::lround(c.cells[d] * factor));
@@ -74,12 +101,14 @@ std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::M
         refined.pile.pile.radial_divisions = static_cast<int>(std::lround(c.pile.pile.radial_divisions * factor));
     }
     io::MpmRun<D> run = io::build_mpm_run<D>(refined);
-    coupling::StageDriver<D> driver(run.model, run.stages, run.loads, run.settings);
+    GridProgress<D> progress(grid, quiet);
+    coupling::StageDriver<D> driver(run.model, run.stages, run.loads, run.settings, &progress);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
     const AttachedPile<D> pile(run, driver);
-    driver.run();
+    stopped = driver.run(stop) == coupling::StageDriver<D>::Outcome::Stopped;
+    if (stopped) return {};
     auto checks = mpm::run_mpm_verification<D>(context, run.model, run.x0, driver.history());
     for (auto& k : checks) k.name += "_grid_" + grid;
     return checks;
@@ -271,7 +300,19 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             for (double f : c.grid_sequence) {
                 std::string grid;
                 if (!quiet) std::printf("  grid sequence: running the case at %g x the cells\n", f);
-                by_grid.push_back(checks_on_grid<D>(c, context, f, grid));
+                bool stopped = false;
+                by_grid.push_back(checks_on_grid<D>(c, context, f, grid, quiet, &stop, stopped));
+                if (stopped) {
+                    // Resuming from the case's own checkpoint, if it wrote one, reruns the sequence.
+                    if (fs::exists(output.checkpoint_path()))
+                        std::fprintf(stderr, "pilempm: interrupted on grid %s of the verification's grid sequence; resume "
+                                             "with --resume (checkpoint kept in %s)\n",
+                                     grid.c_str(), staged.incomplete_path().c_str());
+                    else
+                        std::fprintf(stderr, "pilempm: interrupted on grid %s of the verification's grid sequence; "
+                                             "nothing kept\n", grid.c_str());
+                    return 130;
+                }
                 factors.push_back(f);
                 checks.insert(checks.end(), by_grid.back().begin(), by_grid.back().end());
             }

@@ -3,7 +3,8 @@
 // its wall time) and the VTK series (every .vtu and the .pvd), byte for byte. Checked for
 // a dynamic stage (the 1D wave, FLIP and APIC), for a run stopped in its quasi-static
 // stage that goes on to a dynamic one, for saturated soil stopped in a consolidation
-// pause and in the blow after it, and for an FE pile jacked into the soil.
+// pause and in the blow after it, for an FE pile jacked into the soil, and for a stop
+// during a verification's grid-sequence reruns.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -212,5 +213,29 @@ TEST(MpmResume, NothingToResumeIsAClearError) {
     EXPECT_EQ(run(exe + " run " + wave_case(dir, false) + " --out " + (dir / "none").string() +
                   " --quiet --resume 2>/dev/null"),
               1);
+    fs::remove_all(dir);
+}
+
+// A stop while a verification reruns the case on its grid sequence (the 1D wave: 263 steps
+// on its own grid, about twice that on the first finer one) ends the job at once with 130,
+// naming the grid, the case's own run kept as .incomplete with its checkpoint; resumed, it
+// reruns the sequence and writes what an uninterrupted run writes.
+TEST(MpmResume, AStopInAGridSequenceRerunEndsTheJobAndResumesToTheSameResults) {
+    const fs::path dir = fresh_dir("grid-sequence");
+    const std::string exe = PILEMPM_EXECUTABLE;
+    const std::string wave = std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/mpm-wave-1d.yaml";
+    const fs::path log = dir / "stderr.txt";
+    ASSERT_EQ(run("PILEMPM_INTERRUPT_AFTER_STEPS=400 PILEMPM_INTERRUPT_SIGNAL=" + std::to_string(SIGTERM) + " " + exe +
+                  " run " + wave + " --out " + (dir / "split").string() + " --quiet 2>" + log.string()),
+              130);
+    const std::string said = read_file(log);
+    EXPECT_NE(said.find("interrupted on grid"), std::string::npos) << said;
+    EXPECT_FALSE(fs::exists(dir / "split"));
+    ASSERT_TRUE(fs::exists(dir / "split.incomplete" / "checkpoint.h5"));
+    ASSERT_EQ(run(exe + " run " + wave + " --out " + (dir / "split").string() + " --quiet --resume"), 0);
+    ASSERT_EQ(run(exe + " run " + wave + " --out " + (dir / "whole").string() + " --quiet"), 0);
+    EXPECT_FALSE(fs::exists(dir / "split.incomplete"));
+    for (const char* name : {"history.csv", "verification.json"})
+        EXPECT_EQ(read_file(dir / "whole" / name), read_file(dir / "split" / name)) << name << " differs";
     fs::remove_all(dir);
 }
