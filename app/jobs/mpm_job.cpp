@@ -19,7 +19,7 @@
 #include "io/writers/json_writer.hpp"
 #include "io/writers/mpm_run_output.hpp"
 #include "io/writers/staged_directory.hpp"
-#include "io/writers/terminal_progress.hpp"
+#include "io/writers/stage_progress.hpp"
 #include "mpm/analysis/granular_collapse.hpp"
 #include "io/writers/pile_contact_output.hpp"
 #include "io/writers/plots.hpp"
@@ -59,30 +59,6 @@ mpm::MpmCheckContext check_context(const io::MpmCase& c) {
             c.probes,             first.youngs_modulus};
 }
 
-// A rerun's progress, as the main run's, with the grid in its name.
-template <int D>
-class GridProgress final : public coupling::StageObserver<D> {
-public:
-    GridProgress(std::string grid, bool quiet) : grid_(std::move(grid)), quiet_(quiet) {}
-    void stage_begin(int, const coupling::StageSpec& spec) override {
-        progress_ = std::make_unique<io::TerminalProgress>("grid " + grid_ + ", mpm stage '" + spec.name + "'", !quiet_);
-    }
-    void stage_progress(const coupling::StageSpec& spec, const coupling::DriverState& state,
-                        const mpm::MpmSolver<D>& solver) override {
-        if (spec.quasi_static) progress_->update_count(state.stage_steps - 1, spec.max_steps, "steps (quasi-static)");
-        else progress_->update(solver.time() - state.stage_start_time, spec.duration, solver.steps());
-    }
-    void stage_end(int, const coupling::StageSpec&, const coupling::StageReport&) override {
-        if (progress_) progress_->done();
-        progress_.reset();
-    }
-
-private:
-    std::string grid_;
-    bool quiet_;
-    std::unique_ptr<io::TerminalProgress> progress_;
-};
-
 // The case on a grid `factor` times finer along every axis (the pile's mesh with it), run
 // with no output but progress, and its checks, their names saying the grid; nothing, with
 // `stopped` set, when a stop request (SIGINT, SIGTERM) ends the rerun early.
@@ -101,7 +77,7 @@ std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::M
         refined.pile.pile.radial_divisions = static_cast<int>(std::lround(c.pile.pile.radial_divisions * factor));
     }
     io::MpmRun<D> run = io::build_mpm_run<D>(refined);
-    GridProgress<D> progress(grid, quiet);
+    io::StageProgress<D> progress("grid " + grid + ", ", quiet);
     coupling::StageDriver<D> driver(run.model, run.stages, run.loads, run.settings, &progress);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));

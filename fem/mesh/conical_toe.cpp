@@ -8,6 +8,10 @@
 
 namespace pilempm::fem {
 
+double cone_height(double radius, double apex_angle_deg) {
+    return radius / std::tan(0.5 * apex_angle_deg * std::numbers::pi / 180.0);
+}
+
 double shape_conical_toe(PileMesh& mesh, double apex_angle_deg) {
     if (mesh.dim != 2) throw std::invalid_argument("a conical toe needs the axisymmetric wall mesh, not a rod");
     if (!(apex_angle_deg > 0.0 && apex_angle_deg < 180.0))
@@ -21,7 +25,7 @@ double shape_conical_toe(PileMesh& mesh, double apex_angle_deg) {
     for (int i = 0; i < mesh.num_nodes(); ++i) length = std::max(length, mesh.z(i));
     if (mesh.toe_nodes.empty() || inner > 1e-12 * outer)
         throw std::invalid_argument("a conical toe needs a closed-ended (solid) toe; this pile is open at its toe");
-    const double height = outer / std::tan(0.5 * apex_angle_deg * std::numbers::pi / 180.0);
+    const double height = cone_height(outer, apex_angle_deg);
     const double blend = 2.0 * height;
     if (blend >= length)
         throw std::invalid_argument("the pile (" + std::to_string(length) + " m) is too short for its cone (" +

@@ -15,4 +15,7 @@ namespace pilempm::fem {
 // a pile shorter than 2 h.
 double shape_conical_toe(PileMesh& mesh, double apex_angle_deg);
 
+// A cone's height from its base radius and apex angle (degrees): R / tan(angle / 2).
+double cone_height(double radius, double apex_angle_deg);
+
 }  // namespace pilempm::fem

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <stdexcept>
 
 #include "core/conventions.hpp"
@@ -132,12 +131,10 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         // The soil where the pile's steel is: removed (wished in place), else an error.
         const fem::PileGeometry g = fem::make_pile_geometry(c.pile.pile.segments, c.pile.pile.taper_ratio);
         // A conical toe's steel reaches r = R z / h below its shoulder (z = h).
-        const double cone_height = c.pile.toe_cone_angle > 0.0
-                                       ? g.outer_radius_at(0.0) / std::tan(0.5 * c.pile.toe_cone_angle * std::numbers::pi / 180.0)
-                                       : 0.0;
+        const double cone = c.pile.toe_cone_angle > 0.0 ? fem::cone_height(g.outer_radius_at(0.0), c.pile.toe_cone_angle) : 0.0;
         auto outer_at = [&](double z) {
             const double ro = g.outer_radius_at(z);
-            return z < cone_height ? ro * std::max(z, 0.0) / cone_height : ro;
+            return z < cone ? ro * std::max(z, 0.0) / cone : ro;
         };
         // Overlapping: a point's domain reaches into the steel (its centre in it: removed).
         std::vector<char> keep(m.particles.size(), 1);

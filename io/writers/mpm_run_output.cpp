@@ -14,7 +14,8 @@ MpmRunOutput<D>::MpmRunOutput(StagedDirectory& staged, std::vector<std::string> 
     : staged_(staged),
       vtk_(staged.path() / "vtk", "particles", std::move(state_names)),
       fingerprint_(std::move(case_fingerprint)),
-      quiet_(quiet) {}
+      quiet_(quiet),
+      progress_("", quiet) {}
 
 template <int D>
 void MpmRunOutput<D>::snapshot(double time, const mpm::MpmModel<D>& model) {
@@ -37,21 +38,19 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
 }
 
 template <int D>
-void MpmRunOutput<D>::stage_begin(int, const coupling::StageSpec& spec) {
-    progress_ = std::make_unique<TerminalProgress>("mpm stage '" + spec.name + "'", !quiet_);
+void MpmRunOutput<D>::stage_begin(int stage, const coupling::StageSpec& spec) {
+    progress_.stage_begin(stage, spec);
 }
 
 template <int D>
 void MpmRunOutput<D>::stage_progress(const coupling::StageSpec& spec, const coupling::DriverState& state,
                                      const mpm::MpmSolver<D>& solver) {
-    if (spec.quasi_static) progress_->update_count(state.stage_steps - 1, spec.max_steps, "steps (quasi-static)");
-    else progress_->update(solver.time() - state.stage_start_time, spec.duration, solver.steps());
+    progress_.stage_progress(spec, state, solver);
 }
 
 template <int D>
-void MpmRunOutput<D>::stage_end(int, const coupling::StageSpec& spec, const coupling::StageReport& report) {
-    if (progress_) progress_->done();
-    progress_.reset();
+void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, const coupling::StageReport& report) {
+    progress_.stage_end(stage, spec, report);
     if (!quiet_ && spec.quasi_static && !report.stopped)
         std::printf("stage '%s': %ld steps, unbalanced force ratio %.3g (tolerance %.3g)%s\n", spec.name.c_str(),
                     report.steps, report.unbalanced_ratio, spec.tolerance,

@@ -10,7 +10,7 @@
 
 #include "coupling/driver/stage_driver.hpp"
 #include "io/writers/staged_directory.hpp"
-#include "io/writers/terminal_progress.hpp"
+#include "io/writers/stage_progress.hpp"
 #include "io/writers/vtk_particle_writer.hpp"
 
 namespace pilempm::io {
@@ -49,7 +49,7 @@ private:
     ParticleVtkSeries<D> vtk_;
     std::string fingerprint_;
     bool quiet_;
-    std::unique_ptr<TerminalProgress> progress_;
+    StageProgress<D> progress_;
     const coupling::CoupledBody<D>* body_ = nullptr;
     std::function<void(double)> also_;
 };

@@ -47,7 +47,9 @@ TEST(ConicalToe, SixtyDegreeConeHasTheConesVolumeAndItsToeOnTheCone) {
         // Everything from 2h up is where the mesher put it; every quad stays counter-clockwise.
         const PileMesh flat = solid_pile(L, R, 0.1, divisions);
         for (int i = 0; i < mesh.num_nodes(); ++i)
-            if (flat.z(i) >= 2.0 * h) EXPECT_EQ(mesh.z(i), flat.z(i));
+            if (flat.z(i) >= 2.0 * h) {
+                EXPECT_EQ(mesh.z(i), flat.z(i));
+            }
         const ElementBlock& b = mesh.blocks.front();
         for (int e = 0; e < b.num_elements(); ++e) {
             double twice = 0.0;
