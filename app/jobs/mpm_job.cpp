@@ -44,7 +44,7 @@ struct AttachedPile {
             if (!run.pile.present) return;
             pile = std::make_unique<fem::ExplicitPile>(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
             coupled = std::make_unique<coupling::CoupledPile>(*pile, run.pile.contact, run.pile.frame, run.pile.gravity,
-                                                              run.pile.cut_fields);
+                                                              run.pile.cut_fields, run.pile.toe_slip_line);
             coupled->set_head_control(run.pile.heads);
             driver.couple(coupled.get());
             driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled));

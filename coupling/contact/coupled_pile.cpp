@@ -9,8 +9,8 @@
 namespace pilempm::coupling {
 
 CoupledPile::CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity,
-                         bool cut_fields)
-    : pile_(pile), contact_(contact), frame_(frame), gravity_(gravity), cut_fields_(cut_fields),
+                         bool cut_fields, ToeSlipLine slip)
+    : pile_(pile), contact_(contact), frame_(frame), gravity_(gravity), cut_fields_(cut_fields), slip_(slip),
       surface_(pile_contact_surface(pile.mesh())) {
     const auto& mass = pile_.operators().lumped_mass;
     surface_.inverse_mass.resize(pile_.mesh().num_nodes());
@@ -39,12 +39,26 @@ double head_target(const std::vector<PileHeadControl>& heads, int stage, double 
 
 void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time_in_stage) {
     place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);
-    if (cut_fields_) {
-        const int offset = m.grid.water ? 2 : 1;
-        if (m.grid.fields < 2 * offset)
-            throw std::invalid_argument("the soil either side of the pile's wall needs a grid of " +
-                                        std::to_string(2 * offset) + " velocity fields");
-        m.field_cuts = {mpm::FieldCut{pile_mid_line(pile_.mesh(), pile_.displacement(), frame_), offset}};
+    if (cut_fields_ || slip_.length > 0.0) {
+        // Each cut doubles the fields (a point's field: the sum of the offsets of the cuts
+        // between it and the node).
+        int offset = m.grid.water ? 2 : 1;
+        m.field_cuts.clear();
+        auto add = [&](mpm::FieldCut cut, const char* what) {
+            if (m.grid.fields < 2 * offset)
+                throw std::invalid_argument(std::string(what) + " needs a grid of " + std::to_string(2 * offset) +
+                                            " velocity fields");
+            cut.offset = offset;
+            m.field_cuts.push_back(std::move(cut));
+            offset *= 2;
+        };
+        if (cut_fields_) add({pile_mid_line(pile_.mesh(), pile_.displacement(), frame_)}, "the soil either side of the pile's wall");
+        if (slip_.length > 0.0) {
+            mpm::FieldCut line{toe_slip_line(surface_, slip_.length)};
+            line.contact_segments = 1;  // the slip line; the shaft above it is a wall
+            line.friction = slip_.friction;
+            add(std::move(line), "the toe's slip line");
+        }
     }
     contact_.compute(m.particles, m.shape, surface_, dt, m.materials);
     // The steel is impermeable: the pore water does not cross the surface the soil touches.

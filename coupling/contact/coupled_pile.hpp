@@ -30,13 +30,23 @@ struct PileHeadControl {
     double rise_time = 0.0;
 };
 
+// A slip line through the soil from the toe's outer corner (pile_surface.hpp, toe_slip_line):
+// the soil pushed ahead of the toe and the soil beside the shaft on grid fields of their
+// own, in frictional contact along it, so the soil ahead does not drag the shaft's soil
+// down through the grid nodes they would share. length 0: none.
+struct ToeSlipLine {
+    double length = 0.0;    // m
+    double friction = 0.0;  // Coulomb coefficient across it: tan of the soil's friction angle
+};
+
 class CoupledPile final : public CoupledBody<2> {
 public:
     // gravity: the pile's own weight, m/s^2 down, at a stage's gravity factor of 1. cut_fields: the
     // soil inside and outside an open wall on their own grid fields (a grid of 2 fields, 4
-    // with water), the cut along the wall's mid-line moving with it.
+    // with water), the cut along the wall's mid-line moving with it. slip: a toe slip line
+    // moving with the pile (twice the fields again).
     CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileFrame frame, double gravity = 0.0,
-                bool cut_fields = true);
+                bool cut_fields = true, ToeSlipLine slip = {});
 
     // The head's control in each stage (index); stages beyond the list leave it free.
     void set_head_control(std::vector<PileHeadControl> per_stage) { head_ = std::move(per_stage); }
@@ -78,6 +88,7 @@ private:
     double gravity_;
     double gravity_factor_ = 1.0;
     bool cut_fields_;
+    ToeSlipLine slip_;
     ContactSurface surface_;
     std::vector<PileHeadControl> head_;
     int substeps_ = 1;

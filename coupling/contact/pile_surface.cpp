@@ -84,4 +84,35 @@ std::vector<double> pile_mid_line(const fem::PileMesh& mesh, const std::vector<d
     return line;
 }
 
+std::vector<double> toe_slip_line(const ContactSurface& surface, double length) {
+    // The outer face's nodes, lowest (the corner) first, and the toe segment ending there.
+    std::vector<int> outer;
+    for (int k = 0; k < surface.num_segments(); ++k)
+        if (surface.side[k] == SurfaceSide::Outer) {
+            outer.push_back(surface.a[k]);
+            outer.push_back(surface.b[k]);
+        }
+    if (outer.empty()) throw std::invalid_argument("a toe slip line needs a pile with an outer face");
+    const auto& x = surface.x;
+    std::sort(outer.begin(), outer.end(), [&](int i, int j) { return x[2 * i + 1] < x[2 * j + 1]; });
+    outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
+    const int corner = outer.front();
+    int from = -1;  // the toe segment's other node
+    for (int k = 0; k < surface.num_segments(); ++k)
+        if (surface.side[k] == SurfaceSide::Toe && (surface.a[k] == corner || surface.b[k] == corner))
+            from = surface.a[k] == corner ? surface.b[k] : surface.a[k];
+    if (from < 0) throw std::invalid_argument("a toe slip line needs a toe that meets the outer face");
+    const double cx = x[2 * corner], cy = x[2 * corner + 1];
+    const double ex = cx - x[2 * from], ey = cy - x[2 * from + 1], e = std::hypot(ex, ey);
+    // The toe face's outward normal (the face runs outward from `from` to the corner) plus the shaft's.
+    double bx = ey / e + 1.0, by = -ex / e;
+    const double b = std::hypot(bx, by);
+    std::vector<double> line = {cx + length * bx / b, cy + length * by / b};
+    for (const int i : outer) {
+        line.push_back(x[2 * i]);
+        line.push_back(x[2 * i + 1]);
+    }
+    return line;
+}
+
 }  // namespace pilempm::coupling

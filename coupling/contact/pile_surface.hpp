@@ -27,4 +27,12 @@ void place_pile_surface(ContactSurface& surface, const fem::PileMesh& mesh, cons
 // vertex, ascending in y).
 std::vector<double> pile_mid_line(const fem::PileMesh& mesh, const std::vector<double>& u, const PileFrame& frame);
 
+// The toe's slip line and the shaft above it, as one field cut's polyline in the soil's
+// frame (2 per vertex, ascending in y): a straight line `length` long from the toe's outer
+// corner (a cone's shoulder) into the soil along the bisector of the corner's outward
+// normals (45 deg down on a flat toe), then up the outer shaft to the head. The slip line
+// splits the soil the toe pushes ahead from the soil beside the shaft; the shaft's part
+// keeps the two from sharing the grid nodes inside the pile. From a placed surface.
+std::vector<double> toe_slip_line(const ContactSurface& surface, double length);
+
 }  // namespace pilempm::coupling

@@ -89,6 +89,10 @@ struct MpmPileInput {
     bool self_weight = true;        // the pile's weight under the case's gravity
     bool wished_in_place = false;   // starts embedded: the soil in its wall removed, overlaps ignored
     double toe_cone_angle = 0.0;    // degrees: a closed toe's conical tip, its apex at toe_elevation (0: flat)
+    // A slip line from the toe's outer corner into the soil (coupling::ToeSlipLine): its
+    // length in grid cells (0: none) and the soil's friction angle across it, degrees.
+    double slip_line_cells = 0.0;
+    double slip_line_friction_angle = 0.0;
     // Open at the toe (a tube; segments run head to toe), else closed-ended (solid there).
     bool open_ended() const {
         return !pile.segments.empty() && pile.segments.back().wall_thickness < 0.5 * pile.segments.back().outer_diameter;

@@ -223,6 +223,13 @@ MpmCase read_mpm_case(const std::string& file) {
             p.toe_cone_angle = pm->number("toe_cone_angle", in_open_range(0.0, 180.0, "a cone's apex angle in degrees"));
             c.lines["pile.toe_cone_angle"] = pm->line_of("toe_cone_angle");
         }
+        if (auto sl = pm->optional_map("toe_slip_line")) {
+            c.lines["pile.toe_slip_line"] = pm->line_of("toe_slip_line");
+            p.slip_line_cells = sl->number_or("length_in_cells", 1.5, in_open_range(0.0, 20.0, "a length in grid cells"));
+            p.slip_line_friction_angle =
+                sl->number("friction_angle", in_open_range(0.0, 90.0, "the soil's friction angle in degrees"));
+            sl->finish();
+        }
         const int model_line = pm->line_of("model");
         read_pile_section(std::move(*pm), p.pile, c, false);
         if (p.pile.model != PileModel::Axisymmetric)

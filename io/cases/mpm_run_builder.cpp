@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/conventions.hpp"
@@ -91,8 +92,16 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         m.grid.water = true;
         m.grid.fields = 2;
     }
-    // The soil inside and outside an open pile's wall: a set of fields each (a cut).
+    // The soil inside and outside an open pile's wall: a set of fields each (a cut); and
+    // either side of a toe slip line.
     if (c.pile.present && c.pile.open_ended()) m.grid.fields *= 2;
+    if (c.pile.present && c.pile.slip_line_cells > 0.0) {
+        if (coupled)
+            throw CaseError(c.file, c.line_of("pile.toe_slip_line"), "pile.toe_slip_line",
+                            "dry, drained or undrained soil (a slip line with pore-water fields is not built yet)",
+                            "a coupled (v-w) material");
+        m.grid.fields *= 2;
+    }
     m.grid.allocate();
     m.shape = c.shape;
     m.axisymmetric = c.axisymmetric;
@@ -288,6 +297,11 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.frame.toe_elevation = c.pile.toe_elevation;
             // A solid (closed-ended) pile has no soil inside: no cut through the grid's fields.
             pile.cut_fields = c.pile.open_ended();
+            if (c.pile.slip_line_cells > 0.0) {
+                const double cell = std::min(c.size[0] / c.cells[0], c.size[1] / c.cells[1]);
+                pile.toe_slip_line = {c.pile.slip_line_cells * cell,
+                                      std::tan(c.pile.slip_line_friction_angle * std::numbers::pi / 180.0)};
+            }
             pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
             for (const auto& st : c.stages)
                 pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_loaded, st.pile_force, st.pile_rise_time});

@@ -28,6 +28,7 @@ struct MpmRun {
         coupling::PileFrame frame;
         double gravity = 0.0;
         bool cut_fields = true;
+        coupling::ToeSlipLine toe_slip_line;
         std::vector<coupling::PileHeadControl> heads;
     } pile;
 };

@@ -1,6 +1,7 @@
 #include "mpm/grid/field_cut.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pilempm::mpm {
 
@@ -38,6 +39,29 @@ bool FieldCut::crosses(const double* a, const double* b) const {
         if ((ca > 0.0) != (da > 0.0)) ++crossings;
     }
     return crossings % 2 == 1;
+}
+
+int FieldCut::normal_away_from(const double* p, double* n) const {
+    const int count = num_vertices();
+    double best = 1e300;
+    int nearest = -1;
+    n[0] = n[1] = 0.0;
+    for (int k = 0; k + 1 < count; ++k) {
+        const double* c = &vertices[2 * k];
+        const double* d = c + 2;
+        const double ex = d[0] - c[0], ey = d[1] - c[1], length2 = ex * ex + ey * ey;
+        if (!(length2 > 0.0)) continue;
+        const double t = std::clamp(((p[0] - c[0]) * ex + (p[1] - c[1]) * ey) / length2, 0.0, 1.0);
+        const double dx = p[0] - c[0] - t * ex, dy = p[1] - c[1] - t * ey, distance2 = dx * dx + dy * dy;
+        if (distance2 >= best) continue;
+        best = distance2;
+        nearest = k;
+        // The segment's right-hand normal points away from a point on its left, and back.
+        const double s = side(c, d, p) / std::sqrt(length2);
+        n[0] = s * ey;
+        n[1] = -s * ex;
+    }
+    return nearest;
 }
 
 void apply_field_cuts(const Grid<2>& grid, const std::vector<FieldCut>& cuts, const double* x, Stencil<2>& s) {

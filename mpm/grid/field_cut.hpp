@@ -17,11 +17,20 @@ struct FieldCut {
     // from its toe to its head), 2 per vertex.
     std::vector<double> vertices;
     int offset = 1;  // fields added to a crossing entry (2 with water fields: pairs)
+    // Its lowest `contact_segments` segments are a slip line through one material rather
+    // than a wall between two: there the sides meet at the nodes both reach, in frictional
+    // contact (mpm/grid/field_contact.hpp); the rest are walls.
+    int contact_segments = 0;
+    double friction = 0.0;  // Coulomb coefficient across the slip line (tan of its friction angle)
+    bool has_contact() const { return contact_segments > 0; }
 
     int num_vertices() const { return static_cast<int>(vertices.size() / 2); }
     // Whether the line from a to b crosses the polyline. A point on the polyline counts as
     // being on its +x side, so a node on the cut still belongs to exactly one side.
     bool crosses(const double* a, const double* b) const;
+    // The unit normal at p of the polyline's segment nearest p, pointing away from p's side
+    // (from the field p's own side moves with to the one across); returns that segment.
+    int normal_away_from(const double* p, double* n) const;
 };
 
 // Moves each stencil entry of the point at x across every cut its line to the node crosses.

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/grid/field_contact.hpp"
 #include "mpm/solver/objective_rotation.hpp"
 #include "mpm/solver/solver_passes.hpp"
 
@@ -426,6 +427,8 @@ void MpmSolver<D>::update_grid(double dt) {
             }
         }
     }
+    if constexpr (D == 2)
+        if (any_contact_cut(m_.field_cuts)) contact_across_cuts(g, m_.field_cuts, tiny, dt, &residual_);
     walls_and_balance(dt, applied);
 }
 
@@ -575,6 +578,9 @@ void MpmSolver<D>::update_points_and_remap(double dt) {
             }
         }
     }
+    // Nor interpenetrate across a slip line.
+    if constexpr (D == 2)
+        if (any_contact_cut(m_.field_cuts)) contact_across_cuts(g, m_.field_cuts, tiny, 0.0, nullptr);
     // Nor cross an impermeable body's surface.
     if (coupled_) hold_water_at_walls(0.0);
 }

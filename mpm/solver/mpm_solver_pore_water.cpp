@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpm/grid/field_contact.hpp"
 #include "mpm/solver/mpm_solver.hpp"
 #include "mpm/solver/solver_passes.hpp"
 
@@ -180,6 +181,9 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
         }
     }
     hold_water_at_walls(dt);
+    // Slip lines: not yet with water fields (contact_across_cuts says so).
+    if constexpr (D == 2)
+        if (any_contact_cut(m_.field_cuts)) contact_across_cuts(g, m_.field_cuts, tiny, dt, &residual_);
     walls_and_balance(dt, applied);
 }
 

@@ -21,7 +21,8 @@ static void BM_CoupledPileJackingStep(benchmark::State& state) {
     auto run = io::build_mpm_run<2>(c);
     auto& m = run.model;
     fem::ExplicitPile pile(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
-    coupling::CoupledPile coupled(pile, run.pile.contact, run.pile.frame, run.pile.gravity, run.pile.cut_fields);
+    coupling::CoupledPile coupled(pile, run.pile.contact, run.pile.frame, run.pile.gravity, run.pile.cut_fields,
+                                  run.pile.toe_slip_line);
     coupled.set_head_control(run.pile.heads);
     m.local_damping = 0.7;  // the jacking stage's
     mpm::MpmSolver<2> soil(m);

@@ -134,3 +134,25 @@ TEST(PileInput, AConicalToeNeedsAClosedPileAndKeepsTheSoilRoundTheCone) {
     for (int node : run.pile.mesh.toe_nodes) lowest = std::min(lowest, run.pile.mesh.z(node));
     EXPECT_EQ(lowest, 0.0);  // the apex is the toe
 }
+
+// A toe slip line: its length in cells of the grid and its friction angle's tangent; a grid
+// twice the fields (4 with an open wall's cut); a missing angle, or pore-water fields, is
+// an input error naming the key.
+TEST(PileInput, AToeSlipLineDoublesTheFieldsAndIsMeasuredInCells) {
+    const std::string with = replaced(jacking(), "  friction: 0.4",
+                                      "  toe_slip_line: {length_in_cells: 2.0, friction_angle: 35.0}\n  friction: 0.4");
+    const fs::path file = write(with, "slip");
+    const auto run = pio::build_mpm_run<2>(pio::read_mpm_case(file.string()));
+    fs::remove(file);
+    EXPECT_EQ(run.model.grid.fields, 4);  // open: the wall's cut, then the slip line's
+    EXPECT_NEAR(run.pile.toe_slip_line.length, 2.0 * 0.1, 1e-12);  // cells of 0.1 m
+    EXPECT_NEAR(run.pile.toe_slip_line.friction, std::tan(35.0 * std::numbers::pi / 180.0), 1e-12);
+    const auto missing = error_of(replaced(with, ", friction_angle: 35.0", ""), "slip_no_angle");
+    EXPECT_NE(missing.find("friction_angle"), std::string::npos) << missing;
+    const auto unknown = error_of(replaced(with, "length_in_cells", "length"), "slip_unknown");
+    EXPECT_NE(unknown.find("length"), std::string::npos) << unknown;
+    const auto water = error_of(replaced(with, "cohesion: 1.0e3}", "cohesion: 1.0e3,\n     drainage: coupled, porosity: 0.4, hydraulic_conductivity: 1.0e-4}"),
+                                "slip_water");
+    EXPECT_NE(water.find("pile.toe_slip_line"), std::string::npos) << water;
+    EXPECT_NE(water.find("pore-water"), std::string::npos) << water;
+}
