@@ -108,6 +108,7 @@ struct MpmCase : CaseFile {
     int per_cell = 2;
     double flip = 0.98, cfl = 0.5;
     bool apic = false;              // velocity_transfer: apic (else the FLIP/PIC blend)
+    bool smooth_dilatation = false; // volumetric_strain: nodal_average (else: each point's own)
     std::vector<MpmMaterialInput> materials;
     std::vector<MpmRegionInput> regions;
     std::vector<MpmBoundaryInput> boundaries;

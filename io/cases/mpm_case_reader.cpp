@@ -175,6 +175,7 @@ MpmCase read_mpm_case(const std::string& file) {
         root.fail("velocity_transfer", "apic with shape_function gimp or cpdi (not linear)", "apic");
     if (c.apic && root.has("flip"))
         root.fail("flip", "no flip with velocity_transfer: apic (APIC has no FLIP/PIC blend)", "a flip fraction");
+    c.smooth_dilatation = root.choice_or("volumetric_strain", "point", {"point", "nodal_average"}) == "nodal_average";
     c.flip = root.number_or("flip", 0.98, {"a FLIP fraction from 0 to 1", [](double x) { return x >= 0 && x <= 1; }});
     c.cfl = root.number_or("cfl", 0.5, in_half_open_range(0.0, 1.0, "a Courant number"));
     for (auto m : root.maps("materials")) c.materials.push_back(read_material(std::move(m), true));

@@ -108,6 +108,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
     m.gravity[D - 1] = -c.gravity;
     m.flip = c.flip;
     m.apic = c.apic;
+    m.smooth_dilatation = c.smooth_dilatation;
     m.cfl = c.cfl;
     int stride = 0;
     for (const auto& mat : c.materials) {

@@ -650,6 +650,7 @@ void MpmSolver<D>::update_stress(double dt) {
         for (int k = 0; k < 6; ++k) p.strain[6 * i + k] += de[k];
     }
     if (inverted > 0) throw std::runtime_error(std::to_string(inverted) + " material point(s) turned inside out (J <= 0)");
+    if (m_.smooth_dilatation) smooth_dilatation();
     if (saturated_) update_pore_water(dt);
     for (std::size_t mat = 0; mat < m_.materials.size(); ++mat) {
         const auto& pts = points_of_material_[mat];
@@ -663,6 +664,52 @@ void MpmSolver<D>::update_stress(double dt) {
                 m_.materials[mat]->update(hi - lo, pts.data() + lo, p.dstrain.data(), p.stress.data(), p.state.data(),
                                           p.state_stride);
         }
+    }
+}
+
+// The nodal average of the volumetric strain increment (after Coombs et al. 2018's cell
+// average, on the nodes so that it follows the field cuts): sum N m de_v / sum N m at each
+// node entry, read back with the same weights. The point's normal strains take the
+// difference equally (the hoop too in axisymmetry, not the out-of-plane one in plane
+// strain), its volume and deformation gradient follow, and its deviatoric strain is kept.
+template <int D>
+void MpmSolver<D>::smooth_dilatation() {
+    auto& p = m_.particles;
+    const int normals = D == 3 || m_.axisymmetric ? 3 : 2;
+    scatter(2 * m_.grid.fields, [&](long i, double* buf) {
+        const double* de = &p.dstrain[6 * i];
+        const double m_dv = p.mass[i] * (de[0] + de[1] + de[2]);
+        const Stencil<D>& s = stencil_[i];
+        for (int k = 0; k < s.count; ++k) {
+            double* b = buf + 2 * s.e[k].node;
+            b[0] += s.e[k].N * m_dv;
+            b[1] += s.e[k].N * p.mass[i];
+        }
+    }, dilatation_);
+    const long n = static_cast<long>(p.size());
+    const double tiny = empty_node_mass();
+#pragma omp parallel for schedule(static) if (n > kParallelPoints)
+    for (long i = 0; i < n; ++i) {
+        const Stencil<D>& s = stencil_[i];
+        double sum = 0.0, weight = 0.0;
+        for (int k = 0; k < s.count; ++k) {
+            const double* b = &dilatation_[2 * s.e[k].node];
+            if (b[1] <= tiny) continue;
+            sum += s.e[k].N * b[0] / b[1];
+            weight += s.e[k].N;
+        }
+        if (!(weight > 0.0)) continue;
+        double* de = &p.dstrain[6 * i];
+        const double own = de[0] + de[1] + de[2], smoothed = sum / weight;
+        const double shift = (smoothed - own) / normals;
+        for (int c = 0; c < normals; ++c) {
+            de[c] += shift;
+            p.strain[6 * i + c] += shift;
+        }
+        p.volume[i] *= (1.0 + smoothed) / (1.0 + own);
+        // The in-plane stretch of the deformation gradient by the same normal shift.
+        double* F = &p.F[D * D * i];
+        for (int k = 0; k < D * D; ++k) F[k] *= 1.0 + shift;
     }
 }
 

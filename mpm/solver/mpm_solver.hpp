@@ -49,6 +49,10 @@ struct MpmModel {
     bool apic = false;                  // affine PIC transfers (flip unused)
     double cfl = 0.5;                   // of the P-wave crossing time of a cell
     double local_damping = 0.0;         // Cundall's alpha (quasi-static stages)
+    // Each point's volumetric strain increment replaced by the mass-weighted mean of its
+    // neighbours', projected on the grid's nodes and read back: against volumetric locking
+    // of near-isochoric flow (plastic flow at zero dilatancy, undrained soil).
+    bool smooth_dilatation = false;
     std::vector<SurfaceLoad> surface_loads;  // the active ones; set between steps
     // Saturated soil: per material how it drains (empty: all dry), and the pore water. A
     // coupled material needs a grid with water fields (Grid::water).
@@ -147,6 +151,7 @@ private:
     void grid_to_point(long i, double dt);
     void update_points_and_remap(double dt);
     void update_stress(double dt);
+    void smooth_dilatation();
     // Saturated soil (mpm_solver_pore_water.cpp): the scatter with buoyancy, the mixture's
     // stress and the water field; the coupled v-w grid update with semi-implicit drag; the
     // water's velocity on the points; the excess pore pressure and porosity.
@@ -171,6 +176,7 @@ private:
     std::vector<int> tensor_states_;  // per material: symmetric tensors rotated with the stress
     std::vector<std::vector<double>> thread_buffer_;
     std::vector<double> scratch_;
+    std::vector<double> dilatation_;  // 2 per stored node and field: sum N m de_v, sum N m
     std::vector<unsigned char> block_marks_;
     std::vector<int> chunk_blocks_;  // per chunk of points: first and last slot its points reach (-1: none)
     // Chunk c of `chunks` is the points [chunk_begin(c), chunk_begin(c + 1)).

@@ -26,6 +26,7 @@ pilempm_case_test(verify_mpm_stress_noise_cpdi cases/verification/mpm-stress-noi
 pilempm_case_test(verify_mpm_k0_initial_stress cases/verification/mpm-k0-initial-stress.yaml verification)
 pilempm_case_test(verify_mpm_k0_surcharge cases/verification/mpm-k0-surcharge.yaml verification)
 pilempm_case_test(verify_mpm_strip_footing cases/verification/mpm-strip-footing.yaml verification)
+pilempm_case_test(verify_mpm_lame_cylinder_incompressible cases/verification/mpm-lame-cylinder-incompressible.yaml verification)
 pilempm_case_test(verify_mpm_k0_cam_clay cases/verification/mpm-k0-cam-clay.yaml verification)
 pilempm_case_test(verify_mpm_k0_subloading_cam_clay cases/verification/mpm-k0-subloading-cam-clay.yaml verification)
 # Soil constitutive models in element tests (issue 5).
