@@ -76,3 +76,12 @@ def run_main(prog, argv, plot):
     except (OSError, ValueError, KeyError, InputError) as e:
         print(f"{prog}: {e}", file=sys.stderr)
         return 2
+
+
+def save_figure(fig, path, legend_axes=()):
+    """Grid and small legends on the given axes, then a tight layout saved at 120 dpi and closed."""
+    for ax in legend_axes:
+        ax.grid(True, alpha=0.4)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)

@@ -30,15 +30,15 @@ import argparse
 import copy
 import csv
 import os
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from plot_common import InputError, read_columns, require_matplotlib  # noqa: E402
+from plot_common import InputError, read_columns, require_matplotlib, save_figure  # noqa: E402
 
 plt = require_matplotlib(__file__)
 import yaml  # noqa: E402  (after the re-run under the system python, which has python3-yaml)
+import study_runs  # noqa: E402  (reads YAML too)
 
 ROOT = os.path.dirname(HERE)
 TEMPLATE = os.path.join(ROOT, "cases", "jacking", "shaft-capacity.yaml")
@@ -98,31 +98,8 @@ def variant(template, model, jacked, cell):
     return c
 
 
-def up_to_date(out_dir, case, pilempm):
-    """A complete run of this very case, newer than the executable and the template."""
-    history, case_file = os.path.join(out_dir, "history.csv"), out_dir + ".yaml"
-    if not (os.path.exists(history) and os.path.exists(case_file)):
-        return False
-    with open(case_file) as f:
-        if yaml.safe_load(f) != case:
-            return False
-    return os.path.getmtime(history) > max(os.path.getmtime(pilempm), os.path.getmtime(TEMPLATE))
-
-
 def run_case(case, out_dir, pilempm, threads):
-    """Runs the case into out_dir unless an up-to-date run is there; returns out_dir."""
-    if up_to_date(out_dir, case, pilempm):
-        return out_dir
-    os.makedirs(os.path.dirname(out_dir), exist_ok=True)
-    case_file = out_dir + ".yaml"
-    with open(case_file, "w") as f:
-        yaml.safe_dump(case, f, default_flow_style=None, sort_keys=False, width=100)
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
-    print(f"running {os.path.basename(out_dir)} ...", flush=True)
-    r = subprocess.run([pilempm, "run", case_file, "--out", out_dir, "--quiet"], env=env)
-    if r.returncode != 0:
-        raise RuntimeError(f"{case_file}: pilempm exited {r.returncode}")
-    return out_dir
+    return study_runs.run_case(case, out_dir, pilempm, threads, TEMPLATE)
 
 
 def shaft_capacity(out_dir):
@@ -206,10 +183,7 @@ def plot(out_dir, results, size):
     ax2.invert_yaxis()
     ax2.set_xlabel("normal traction on the shaft after the push (kPa)")
     ax2.set_ylabel("depth (m)")
-    ax2.grid(True, alpha=0.4)
-    ax2.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "shaft_capacity.png"), dpi=120)
+    save_figure(fig, os.path.join(out_dir, "shaft_capacity.png"), (ax2,))
     plt.close(fig)
 
 
@@ -226,9 +200,7 @@ def check(results):
     for r in results:
         if not r["ratio"] > 1.0:
             failed.append(f"model {r['model']}: jacking lowered the shaft capacity (ratio {r['ratio']:.2f})")
-    for f in failed:
-        print("TREND NOT MET: " + f)
-    return 1 if failed else 0
+    return study_runs.trends_status(failed)
 
 
 def main():
@@ -251,11 +223,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except (OSError, ValueError, KeyError, InputError, yaml.YAMLError) as e:
-        print(f"shaft_capacity_study.py: {e}", file=sys.stderr)
-        sys.exit(2)
-    except RuntimeError as e:
-        print(f"shaft_capacity_study.py: {e}", file=sys.stderr)
-        sys.exit(1)
+    study_runs.exit_with("shaft_capacity_study.py", main, (InputError,))

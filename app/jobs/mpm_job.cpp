@@ -67,8 +67,15 @@ std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::M
                                               double factor, std::string& grid, bool quiet,
                                               const coupling::StopRequest* stop, bool& stopped) {
     io::MpmCase refined = c;
-    for (int d = 0; d < D; ++d)
-        if (c.refined_axes[d]) refined.cells[d] = static_cast<int>(std::lround(c.cells[d] * factor));
+    for (int d = 0; d < D; ++d) {
+        if (!c.refined_axes[d]) continue;
+        if (c.zones[d].empty()) {
+            refined.cells[d] = static_cast<int>(std::lround(c.cells[d] * factor));
+            continue;
+        }
+        for (auto& zone : refined.zones[d]) zone.cell /= factor;  // a graded axis: its zones' cells
+        refined.cells[d] = static_cast<int>(mpm::graded_axis(c.origin[d], refined.zones[d]).size()) - 1;
+    }
     grid = std::to_string(refined.cells[0]);
     for (int d = 1; d < D; ++d) grid.append("x").append(std::to_string(refined.cells[d]));
     if (refined.pile.present) {
@@ -224,7 +231,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             const auto thickness = mpm::deposit_profile(m);
             Table profile("deposit_profile", {c.axisymmetric ? "r_centre_m" : "x_centre_m", "thickness_m"});
             for (std::size_t k = 0; k < thickness.size(); ++k)
-                profile.add_row({m.grid.coordinate(0, static_cast<int>(k)) + 0.5 * m.grid.spacing[0], thickness[k]});
+                profile.add_row({m.grid.coordinate(0, static_cast<int>(k)) + 0.5 * m.grid.width(0, static_cast<int>(k)), thickness[k]});
             io::write_csv(staged.path() / "deposit_profile.csv", profile);
         }
     }

@@ -7,6 +7,7 @@
 #include "core/linear_algebra/sparse_linear_solver.hpp"
 #include "io/cases/material_input.hpp"
 #include "io/cases/pile_hammer_input.hpp"
+#include "mpm/grid/graded_axis.hpp"
 #include "mpm/setup/model_setup.hpp"
 #include "mpm/grid/shape_functions.hpp"
 
@@ -104,6 +105,10 @@ struct MpmCase : CaseFile {
     bool axisymmetric = false;
     std::array<double, 3> origin{}, size{};
     std::array<int, 3> cells{};
+    // A graded grid (grid.zones): per axis, the zones its node coordinates are made of; empty
+    // along a uniform axis. size and cells then describe the grid they make.
+    std::array<std::vector<mpm::GridZone>, 3> zones;
+    bool graded() const { return !zones[0].empty(); }
     mpm::ShapeKind shape = mpm::ShapeKind::GIMP;
     int per_cell = 2;
     double flip = 0.98, cfl = 0.5;

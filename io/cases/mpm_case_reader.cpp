@@ -50,9 +50,41 @@ std::pair<int, int> plane(MapReader& m, const std::string& key, int dim) {
     return {p[0] - 'x', p.substr(2) == "max" ? 1 : 0};
 }
 
+// grid.zones: {x: [{to, cell}, ...], y: [...]}, every axis named; the node coordinates are
+// made here once to report a bad zone where it is written.
+void read_grid_zones(MapReader& m, MapReader zm, MpmCase& c) {
+    const int D = c.dimension;
+    if (m.has("size") || m.has("cells")) m.fail("zones", "either zones or size and cells", "both");
+    for (int d = 0; d < D; ++d) {
+        const std::string axis(1, static_cast<char>('x' + d));
+        if (!zm.has(axis)) zm.fail(axis, "the zones along every axis (" + std::string(D == 2 ? "x, y" : "x, y, z") + ")", "none");
+        for (auto z : zm.maps(axis)) {
+            mpm::GridZone zone;
+            zone.to = z.number("to", {"the zone's far end in m", [](double) { return true; }});
+            zone.cell = z.number("cell", positive("cell size in m at the zone's end"));
+            z.finish();
+            c.zones[d].push_back(zone);
+        }
+        try {
+            const auto lines = mpm::graded_axis(c.origin[d], c.zones[d]);
+            c.size[d] = lines.back() - lines.front();
+            c.cells[d] = static_cast<int>(lines.size()) - 1;
+        } catch (const std::invalid_argument& e) {
+            zm.fail(axis, "zones that run forward from the origin with cells that fit and grade gently", e.what());
+        }
+    }
+    zm.finish();
+}
+
 void read_grid(MapReader m, MpmCase& c) {
     const int D = c.dimension;
     c.origin = point(m, "origin", D);
+    if (c.axisymmetric && c.origin[0] < 0.0) m.fail("origin", "r >= 0 in axisymmetry", std::to_string(c.origin[0]));
+    if (auto zm = m.optional_map("zones")) {
+        read_grid_zones(m, std::move(*zm), c);
+        m.finish();
+        return;
+    }
     c.size = point(m, "size", D);
     const auto cells = m.numbers("cells", positive("number of cells"));
     if (static_cast<int>(cells.size()) != D) m.fail("cells", std::to_string(D) + " counts", std::to_string(cells.size()));
@@ -60,7 +92,6 @@ void read_grid(MapReader m, MpmCase& c) {
         c.cells[d] = static_cast<int>(std::lround(cells[d]));
         if (!(c.size[d] > 0.0)) m.fail("size", "positive lengths", std::to_string(c.size[d]));
     }
-    if (c.axisymmetric && c.origin[0] < 0.0) m.fail("origin", "r >= 0 in axisymmetry", std::to_string(c.origin[0]));
     m.finish();
 }
 
@@ -329,9 +360,10 @@ MpmCase read_mpm_case(const std::string& file) {
                 c.refined_axes = {false, false, false};
                 for (const auto& a : axes) c.refined_axes[a[0] - 'x'] = true;
             }
+            // A graded grid refines its zones' cells: any factor will do.
             for (double f : c.grid_sequence)
                 for (int d = 0; d < c.dimension; ++d) {
-                    if (!c.refined_axes[d]) continue;
+                    if (!c.refined_axes[d] || !c.zones[d].empty()) continue;
                     const double n = f * c.cells[d];
                     if (std::abs(n - std::round(n)) > 1e-9 || std::round(n) < 1)
                         v->fail("grid_sequence", "factors that give whole numbers of cells (" +

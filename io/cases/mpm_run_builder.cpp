@@ -65,6 +65,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         m.grid.origin[d] = c.origin[d];
         m.grid.cells[d] = c.cells[d];
         m.grid.spacing[d] = c.size[d] / c.cells[d];
+        if (!c.zones[d].empty()) m.grid.set_lines(d, mpm::graded_axis(c.origin[d], c.zones[d]));
     }
     // Saturated soil: the pore water of each material, and water fields when one is coupled.
     m.water.density = c.water.density;
@@ -299,7 +300,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             // A solid (closed-ended) pile has no soil inside: no cut through the grid's fields.
             pile.cut_fields = c.pile.open_ended();
             if (c.pile.slip_line_cells > 0.0) {
-                const double cell = std::min(c.size[0] / c.cells[0], c.size[1] / c.cells[1]);
+                const double cell = std::min(m.grid.spacing[0], m.grid.spacing[1]);  // the finest (a graded grid's, at the pile)
                 pile.toe_slip_line = {c.pile.slip_line_cells * cell,
                                       std::tan(c.pile.slip_line_friction_angle * std::numbers::pi / 180.0)};
             }

@@ -30,6 +30,30 @@ void Grid<D>::allocate() {
 }
 
 template <int D>
+void Grid<D>::set_lines(int d, std::vector<double> coordinates) {
+    if (coordinates.size() < 2) throw std::invalid_argument("a graded axis needs two nodes or more");
+    double smallest = coordinates[1] - coordinates[0];
+    for (std::size_t i = 1; i < coordinates.size(); ++i) {
+        if (!(coordinates[i] > coordinates[i - 1])) throw std::invalid_argument("graded axis: node coordinates must increase");
+        smallest = std::min(smallest, coordinates[i] - coordinates[i - 1]);
+    }
+    origin[d] = coordinates.front();
+    cells[d] = static_cast<int>(coordinates.size()) - 1;
+    spacing[d] = smallest;
+    lines[d] = std::move(coordinates);
+    // Bin k covers [origin + k h, origin + (k + 1) h) with h the smallest cell: the cell at
+    // its start, then at most one step forward finds any x in it.
+    const int bins = static_cast<int>(std::ceil((lines[d].back() - origin[d]) / smallest)) + 1;
+    bin_cell_[d].assign(bins, 0);
+    int c = 0;
+    for (int k = 0; k < bins; ++k) {
+        const double x = origin[d] + k * smallest;
+        while (c < cells[d] - 1 && x >= lines[d][c + 1]) ++c;
+        bin_cell_[d][k] = c;
+    }
+}
+
+template <int D>
 std::array<int, D> Grid<D>::stored_ijk(int stored) const {
     int block = block_of_slot_[stored / kBlockNodes], local = stored % kBlockNodes;
     std::array<int, D> c{};

@@ -1,6 +1,6 @@
 #pragma once
-// Rectilinear background grid with uniform spacing per axis (O(1) cell lookup), stored in
-// blocks of nodes: only the blocks the material points reach hold node data, so a box of
+// Rectilinear background grid, uniform or graded per axis (O(1) cell lookup either way),
+// stored in blocks of nodes: only the blocks the material points reach hold node data, so a box of
 // kilometres of half-space costs memory where the soil is, not where the grid is.
 // - Nodes have a global number (x fastest, then y, then z) for setting up and reporting,
 //   and, while their block is active, a stored index into the node arrays.
@@ -40,8 +40,12 @@ struct Grid {
     static constexpr int kBlockNodes = D == 2 ? 256 : 512;
 
     std::array<double, D> origin{};
+    // Along a uniform axis the cell size; along a graded one its smallest cell (what the
+    // time step and the penetration's measure need).
     std::array<double, D> spacing{};
     std::array<int, D> cells{};
+    // Graded axes: the node coordinates (cells + 1 of them); empty along a uniform axis.
+    std::array<std::vector<double>, D> lines;
     int fields = 1;
     // Saturated soil: the fields come in pairs, solid 2k and its pore water 2k + 1.
     bool water = false;
@@ -123,21 +127,50 @@ struct Grid {
         }
         return c;
     }
-    double coordinate(int d, int i) const { return origin[d] + spacing[d] * i; }
-    // Index of the cell holding x along axis d (clamped to the grid).
+    // Makes axis d graded with these node coordinates (increasing; origin, cells and
+    // spacing follow from them).
+    void set_lines(int d, std::vector<double> coordinates);
+    bool graded(int d) const { return !lines[d].empty(); }
+    // Node i's coordinate along axis d; past the edges (i < 0, i > cells) the edge cell repeats.
+    double coordinate(int d, int i) const {
+        if (lines[d].empty()) return origin[d] + spacing[d] * i;
+        if (i < 0) return lines[d][0] + i * (lines[d][1] - lines[d][0]);
+        if (i > cells[d]) return lines[d][cells[d]] + (i - cells[d]) * (lines[d][cells[d]] - lines[d][cells[d] - 1]);
+        return lines[d][i];
+    }
+    double width(int d, int i) const { return coordinate(d, i + 1) - coordinate(d, i); }  // cell i's
+    double top(int d) const { return coordinate(d, cells[d]); }
+    // The length along axis d that node i stands for: half of each cell beside it.
+    double tributary(int d, int i) const {
+        return 0.5 * ((i > 0 ? width(d, i - 1) : 0.0) + (i < cells[d] ? width(d, i) : 0.0));
+    }
+    // Index of the cell holding x along axis d (clamped to the grid). A graded axis looks
+    // in a table of bins of its smallest cell: a bin holds one cell boundary at most.
     int cell_of(int d, double x) const {
         const int i = static_cast<int>(std::floor((x - origin[d]) / spacing[d]));
-        return i < 0 ? 0 : (i >= cells[d] ? cells[d] - 1 : i);
+        if (lines[d].empty()) return i < 0 ? 0 : (i >= cells[d] ? cells[d] - 1 : i);
+        if (i < 0) return 0;
+        if (i >= static_cast<int>(bin_cell_[d].size())) return cells[d] - 1;
+        int c = bin_cell_[d][i];
+        while (c < cells[d] - 1 && x >= lines[d][c + 1]) ++c;
+        return c;
+    }
+    // The cell holding x (unclamped, may be -1 or cells): past the edges the edge cell repeats.
+    int cell_beyond(int d, double x) const {
+        if (x < origin[d]) return static_cast<int>(std::floor((x - origin[d]) / width(d, 0)));
+        if (x >= top(d)) return cells[d] + static_cast<int>(std::floor((x - top(d)) / width(d, cells[d] - 1)));
+        return cell_of(d, x);
     }
     bool inside(const double* x) const {
         for (int d = 0; d < D; ++d)
-            if (x[d] < origin[d] || x[d] > origin[d] + spacing[d] * cells[d]) return false;
+            if (x[d] < origin[d] || x[d] > top(d)) return false;
         return true;
     }
     // Bytes of node data per stored node (all fields), for memory reports.
     std::size_t bytes_per_stored_node() const;
 
 private:
+    std::array<std::vector<int>, D> bin_cell_;  // graded axes: the cell at each bin's start
     std::array<int, D> blocks_{};
     std::vector<int> slot_of_block_;
     std::vector<int> block_of_slot_;

@@ -25,12 +25,16 @@ int Stencil<D>::append(int n) {
 
 namespace {
 
-// 1D hat of node at xi with spacing h, and its slope.
-inline double hat(double s, double xi, double h) { return std::max(0.0, 1.0 - std::abs(s - xi) / h); }
-inline double hat_slope(double s, double xi, double h) {
+// 1D hat of node at xi reaching hl to its left and hr to its right (the neighbouring
+// cells; equal on a uniform axis), and its slope.
+inline double hat(double s, double xi, double hl, double hr) {
     const double d = s - xi;
-    if (std::abs(d) >= h) return 0.0;
-    return d > 0.0 ? -1.0 / h : 1.0 / h;
+    return std::max(0.0, d >= 0.0 ? 1.0 - d / hr : 1.0 + d / hl);
+}
+inline double hat_slope(double s, double xi, double hl, double hr) {
+    const double d = s - xi;
+    if (d >= hr || -d >= hl) return 0.0;
+    return d > 0.0 ? -1.0 / hr : 1.0 / hl;
 }
 
 struct Hat1D {
@@ -41,8 +45,8 @@ struct Hat1D {
 
 // Exact integrals of the hat over [a, b] with weight w(s) = s (weighted) or 1: 2-point
 // Gauss on each piece between the hat's kinks (integrands are at most quadratic).
-Hat1D integrate_hat(double xi, double h, double a, double b, bool weighted) {
-    const double kinks[3] = {xi - h, xi, xi + h};
+Hat1D integrate_hat(double xi, double hl, double hr, double a, double b, bool weighted) {
+    const double kinks[3] = {xi - hl, xi, xi + hr};
     double cuts[5] = {a, 0, 0, 0, b};
     int n = 1;
     for (double k : kinks)
@@ -55,9 +59,9 @@ Hat1D integrate_hat(double xi, double h, double a, double b, bool weighted) {
         for (double t : {-g, g}) {
             const double s = mid + t * half, w = weighted ? s : 1.0;
             // The slope is taken at the piece's midpoint: constant on each piece.
-            r.value += 0.5 * half * hat(s, xi, h) * w;
-            r.slope += 0.5 * half * hat_slope(mid, xi, h) * w;
-            r.plain += 0.5 * half * hat(s, xi, h);
+            r.value += 0.5 * half * hat(s, xi, hl, hr) * w;
+            r.slope += 0.5 * half * hat_slope(mid, xi, hl, hr) * w;
+            r.plain += 0.5 * half * hat(s, xi, hl, hr);
         }
     }
     return r;
@@ -130,7 +134,7 @@ void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s)
     std::array<double, D> f{};
     for (int d = 0; d < D; ++d) {
         base[d] = g.cell_of(d, x[d]);
-        f[d] = (x[d] - g.coordinate(d, base[d])) / g.spacing[d];
+        f[d] = (x[d] - g.coordinate(d, base[d])) / g.width(d, base[d]);
     }
     for (int corner = 0; corner < (1 << D); ++corner) {
         std::array<int, D> c{};
@@ -139,7 +143,7 @@ void linear(const Grid<D>& g, bool axisymmetric, const double* x, Stencil<D>& s)
             const int bit = (corner >> d) & 1;
             c[d] = base[d] + bit;
             w[d] = bit ? f[d] : 1.0 - f[d];
-            dw[d] = (bit ? 1.0 : -1.0) / g.spacing[d];
+            dw[d] = (bit ? 1.0 : -1.0) / g.width(d, base[d]);
         }
         const int k = s.append(g.index(c));
         double N = 1.0;
@@ -164,20 +168,34 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
         const double l = half_domain[d * D + d], h = g.spacing[d];
         const bool weighted = axisymmetric && d == 0;
         const bool open[2] = {!g.closed[2 * d], !g.closed[2 * d + 1]};
-        if (!weighted && l <= 0.5 * h) {
+        const bool graded = g.graded(d);
+        if (!weighted && !graded && l <= 0.5 * h) {
             n_axis[d] = ugimp_axis(x[d], l, g.origin[d], h, g.cells[d], open, first[d], S[d], G[d]);
             continue;
         }
         const double a = x[d] - l, b = x[d] + l;
         const double W = weighted ? 2.0 * l * x[d] : 2.0 * l;  // int w ds over the domain
-        const int lo_all = static_cast<int>(std::floor((a - g.origin[d]) / h));
-        const int hi_all = static_cast<int>(std::ceil((b - g.origin[d]) / h));
+        int lo_all, hi_all;
+        if (graded) {
+            lo_all = g.cell_beyond(d, a);
+            const int c = g.cell_beyond(d, b);
+            hi_all = b > g.coordinate(d, c) ? c + 1 : c;
+        } else {
+            lo_all = static_cast<int>(std::floor((a - g.origin[d]) / h));
+            hi_all = static_cast<int>(std::ceil((b - g.origin[d]) / h));
+        }
+        // The hat of node i reaches its neighbouring cells (h each on a uniform axis).
+        auto node_hat = [&](int i) {
+            if (!graded) return integrate_hat(g.coordinate(d, i), h, h, a, b, weighted);
+            const double xi = g.coordinate(d, i);
+            return integrate_hat(xi, xi - g.coordinate(d, i - 1), g.coordinate(d, i + 1) - xi, a, b, weighted);
+        };
         const int lo = std::max(0, lo_all), hi = std::min(g.cells[d], hi_all);
         first[d] = lo;
         n_axis[d] = hi - lo + 1;
         if (n_axis[d] > 4) throw std::logic_error("GIMP domain larger than a cell");
         for (int i = 0; i < n_axis[d]; ++i) {
-            const Hat1D r = integrate_hat(g.coordinate(d, lo + i), h, a, b, weighted);
+            const Hat1D r = node_hat(lo + i);
             S[d][i] = r.value / W;
             G[d][i] = r.slope / W;
             if (weighted) H[i] = r.plain / W;
@@ -185,7 +203,7 @@ void gimp(const Grid<D>& g, bool axisymmetric, const double* x, const double* ha
         for (int side = 0; side < 2; ++side) {
             const int beyond = side == 0 ? lo_all : hi_all;
             if (beyond == (side == 0 ? lo : hi) || !open[side]) continue;
-            const Hat1D r = integrate_hat(g.coordinate(d, beyond), h, a, b, weighted);
+            const Hat1D r = node_hat(beyond);
             extrapolate_past_edge(side, lo, hi, r.value / W, r.slope / W, S[d], G[d]);
             if (weighted) extrapolate_past_edge(side, lo, hi, r.plain / W, 0.0, H, nullptr);
         }

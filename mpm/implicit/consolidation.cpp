@@ -220,13 +220,10 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
         // soil's free surface has about half of it filled.
         const auto ijk = g.stored_ijk(node);
         double tributary = 1.0;
-        for (int d = 0; d < D; ++d) {
-            const bool edge = ijk[d] == 0 || ijk[d] == g.cells[d];
-            tributary *= (edge ? 0.5 : 1.0) * g.spacing[d];
-        }
+        for (int d = 0; d < D; ++d) tributary *= g.tributary(d, ijk[d]);
         if (m_.axisymmetric) {
             const double r = g.coordinate(0, ijk[0]);
-            tributary *= ijk[0] == 0 ? 0.25 * g.spacing[0] : r;
+            tributary *= ijk[0] == 0 ? 0.25 * g.width(0, 0) : r;
         }
         // A node the soil barely reaches (a point's domain just over a cell face) would give a
         // row of almost no stiffness, which the factorisation pivots away from at great cost:

@@ -28,7 +28,7 @@ int fill_region(const Grid<D>& g, Particles<D>& p, const std::function<bool(cons
             for (int d = 0; d < D; ++d) {
                 const int k = rem % n_sub[d];
                 rem /= n_sub[d];
-                len[d] = g.spacing[d] / n_sub[d];
+                len[d] = g.width(d, c[d]) / n_sub[d];
                 x[d] = g.coordinate(d, c[d]) + (k + 0.5) * len[d];
                 vol *= len[d];
             }
@@ -60,13 +60,10 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
             cond.wall = 2 * axis + side;
             cond.wall_friction = friction;
         } else {
-            // Tributary face area of the node: half a cell at the ends of each edge.
+            // Tributary face area of the node: half of each cell beside it.
             double area = 1.0;
-            for (int d = 0; d < D; ++d) {
-                if (d == axis) continue;
-                const bool end = c[d] == 0 || c[d] == g.cells[d];
-                area *= (end ? 0.5 : 1.0) * g.spacing[d];
-            }
+            for (int d = 0; d < D; ++d)
+                if (d != axis) area *= g.tributary(d, c[d]);
             if (axisymmetric) area *= g.coordinate(0, c[0]);
             for (int d = 0; d < D; ++d) cond.dashpot[d] += density * (d == axis ? cp : cs) * area;
             cond.water_dashpot[axis] += water_impedance * area;

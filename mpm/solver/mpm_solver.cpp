@@ -138,8 +138,14 @@ inline std::pair<int, int> mark_blocks(const Grid<D>& g, const double* x, const 
                                        unsigned char* marks) {
     int lo[D], hi[D];
     for (int d = 0; d < D; ++d) {
-        const int a = static_cast<int>(std::floor((x[d] - extent[d] - g.origin[d]) * inv_h[d]));
-        const int b = static_cast<int>((x[d] + extent[d] - g.origin[d]) * inv_h[d]) + 1;
+        int a, b;
+        if (g.graded(d)) {
+            a = g.cell_beyond(d, x[d] - extent[d]);
+            b = g.cell_beyond(d, x[d] + extent[d]) + 1;
+        } else {
+            a = static_cast<int>(std::floor((x[d] - extent[d] - g.origin[d]) * inv_h[d]));
+            b = static_cast<int>((x[d] + extent[d] - g.origin[d]) * inv_h[d]) + 1;
+        }
         lo[d] = std::max(0, a) >> Grid<D>::kBlockShift;
         hi[d] = std::min(g.cells[d], b) >> Grid<D>::kBlockShift;
     }
@@ -173,10 +179,12 @@ void MpmSolver<D>::activate_grid() {
     // be read through a pointer.
     double inv_h[D], top[D], origin[D];
     int cells[D], along[D];
+    bool graded = false;
     for (int d = 0; d < D; ++d) {
         origin[d] = g.origin[d];
         inv_h[d] = 1.0 / g.spacing[d];
-        top[d] = g.origin[d] + g.spacing[d] * g.cells[d];
+        top[d] = g.top(d);
+        graded = graded || g.graded(d);
         cells[d] = g.cells[d];
         along[d] = g.blocks_along()[d];
     }
@@ -219,7 +227,8 @@ void MpmSolver<D>::activate_grid() {
             int c[D];
             bool same = true;
             for (int d = 0; d < D; ++d) {
-                c[d] = static_cast<int>((x[d] - origin[d]) * inv_h[d]);  // x >= origin: truncation is floor
+                // x >= origin: truncation is floor
+                c[d] = graded ? g.cell_of(d, x[d]) : static_cast<int>((x[d] - origin[d]) * inv_h[d]);
                 same = same && c[d] == last[d];
             }
             if (same) continue;
@@ -507,7 +516,7 @@ void MpmSolver<D>::grid_to_point(long i, double dt) {
         double& x = p.x[D * i + d];
         x += vg[d] * dt;
         if (g.closed[2 * d] && x < g.origin[d]) x = g.origin[d];
-        const double top = g.origin[d] + g.spacing[d] * g.cells[d];
+        const double top = g.top(d);
         if (g.closed[2 * d + 1] && x > top) x = top;
     }
 }

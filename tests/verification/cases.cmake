@@ -61,6 +61,19 @@ function(pilempm_shaft_capacity_test name size models label)
   set_tests_properties(${name} PROPERTIES LABELS ${label} TIMEOUT 36000)
 endfunction()
 pilempm_shaft_capacity_test(long_shaft_capacity full 1,2,3,4,5,6 long)
+# Validation 2 (issue 13): seed 000's centrifuge pile (Huy 2008) jacked at 40 g and
+# load-tested, with and without installation, against NEN 9997-1's base settlement lines and
+# the seed's trends. CI: Mohr-Coulomb in medium-dense sand on cells of D/2 in a cut
+# container; long: both sands and both models on D/4 in the whole container.
+function(pilempm_centrifuge_test name cells container sands models label)
+  add_test(NAME ${name}
+    COMMAND python3 ${PROJECT_SOURCE_DIR}/scripts/centrifuge_study.py --cells-per-diameter ${cells}
+            --container ${container} --sands ${sands} --models ${models}
+            --check --threads 1 --pilempm $<TARGET_FILE:pilempm> --out ${CMAKE_BINARY_DIR}/test-output/${name})
+  set_tests_properties(${name} PROPERTIES LABELS ${label} TIMEOUT 72000)
+endfunction()
+pilempm_centrifuge_test(validate_centrifuge_huy2008 2 cut medium mohr_coulomb validation)
+pilempm_centrifuge_test(long_centrifuge_huy2008 4 full medium,loose mohr_coulomb,hypoplastic long)
 # Full-size runs (label long, not in CI: ctest --test-dir build -L long).
 # Granular column collapse, Mohr-Coulomb: the final height against Lube et al. on grid
 # sequences of three (11-17 min each on one core).
