@@ -17,6 +17,7 @@ pilempm_case_test(example_cpt_sand_over_clay cases/drivability/cpt-sand-over-cla
 # MPM soil core (issue 4).
 pilempm_case_test(verify_mpm_column_plane_strain cases/verification/mpm-column-plane-strain.yaml verification)
 pilempm_case_test(verify_mpm_column_axisymmetric cases/verification/mpm-column-axisymmetric.yaml verification)
+pilempm_case_test(verify_mpm_column_graded cases/verification/mpm-column-graded.yaml verification)
 pilempm_case_test(verify_mpm_column_3d cases/verification/mpm-column-3d.yaml verification)
 pilempm_case_test(verify_mpm_lame_cylinder cases/verification/mpm-lame-cylinder.yaml verification)
 pilempm_case_test(verify_mpm_wave_1d cases/verification/mpm-wave-1d.yaml verification)
