@@ -108,7 +108,6 @@ struct MpmCase : CaseFile {
     // A graded grid (grid.zones): per axis, the zones its node coordinates are made of; empty
     // along a uniform axis. size and cells then describe the grid they make.
     std::array<std::vector<mpm::GridZone>, 3> zones;
-    bool graded() const { return !zones[0].empty(); }
     mpm::ShapeKind shape = mpm::ShapeKind::GIMP;
     int per_cell = 2;
     double flip = 0.98, cfl = 0.5;
