@@ -137,7 +137,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         };
         const double margin = settings_.stability_margin;
         totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(stiffness(nrm) * compliance));
-        double gap;
+        double gap, share = 1.0;
         if ((xi <= 0.0 || xi >= 1.0) && rel[0] * nrm[0] + rel[1] * nrm[1] > 0.0) {
             // Past the segment's end, outside: the corner node against the point's domain
             // (a parallelogram of half-edges e1, e2): node - x = a e1 + b e2, inside when
@@ -156,6 +156,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             nrm[0] = sign * (along_e1 ? half[0] / l1 : half[2] / l2);
             nrm[1] = sign * (along_e1 ? half[1] / l1 : half[3] / l2);
             gap = -(along_e1 ? depth1 : depth2);
+            double face_length = len;
             // Both segments at the corner are as near; the force belongs to the one it pushes
             // off (a point under a closed toe's rim bears on the base, not the shaft), and its
             // tangent is the direction of slip.
@@ -170,8 +171,22 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
                     k = other;
                     xi = node == s.a[k] ? 0.0 : 1.0;
                     t[0] = ot[0], t[1] = ot[1];
+                    face_length = olen;
                 }
             }
+            // A face contact's force is its gap times the whole face; a corner overlaps only
+            // part of the point's face, so it takes that share: the face's length inside the
+            // domain over the most of it that could be (the domain's chord along the face, or
+            // the face itself where it is shorter, as a thin wall's tip). Full force here
+            // pushed the soil beside a punch's rim away and held it.
+            const double along = xi <= 0.0 ? 1.0 : -1.0;  // the face runs from the node this way
+            const double fa = along * (t[0] * half[3] - t[1] * half[2]) / det;  // in (e1, e2)
+            const double fb = along * (t[1] * half[0] - t[0] * half[1]) / det;
+            double inside = 1e300, chord = 1e300;
+            if (fa != 0.0) inside = std::min(inside, ((fa > 0.0 ? 1.0 : -1.0) - a) / fa), chord = std::min(chord, 2.0 / std::abs(fa));
+            if (fb != 0.0) inside = std::min(inside, ((fb > 0.0 ? 1.0 : -1.0) - b) / fb), chord = std::min(chord, 2.0 / std::abs(fb));
+            if (settings_.corner_overlap_share)
+                share = std::min(1.0, std::min(inside, face_length) / std::min(chord, face_length));
         } else {
             const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
             const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
@@ -199,8 +214,9 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
                 continue;
             }
         }
-        const double kn = stiffness(nrm);
-        totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(kn * compliance));
+        const double kn_full = stiffness(nrm);
+        totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(kn_full * compliance));
+        const double kn = share * kn_full;
         const double fn = -kn * gap;
         // Tangential: a spring on the slip since the last step, capped by Coulomb.
         const double* va = &s.v[2 * s.a[k]];

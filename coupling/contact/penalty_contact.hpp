@@ -37,6 +37,11 @@ struct ContactSettings {
     // A body wished in place: the overlaps found at the first step are taken as the points'
     // zero gap, and forgotten as each point moves out of its overlap.
     bool ignore_initial_overlap = false;
+    // A point meeting a corner takes the share of the face the corner overlaps (a face
+    // contact's force is its gap times the whole face), else the whole face's force. The
+    // share is right for a punch's rim (verification 2); on a toe only two points wide it
+    // leaves the toe bearing on one rim point, so jacking keeps the whole force for now.
+    bool corner_overlap_share = false;
 };
 
 // A point pressed on the surface this step: the surface's unit normal into the soil there

@@ -294,6 +294,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.steel = c.pile.pile.steel;
             pile.contact.friction = c.pile.friction;
             pile.contact.penalty_factor = c.pile.penalty_factor;
+            pile.contact.corner_overlap_share = c.pile.corner_overlap_share;
             pile.contact.ring = full_ring(1.0);
             pile.contact.ignore_initial_overlap = c.pile.wished_in_place;
             pile.frame.toe_elevation = c.pile.toe_elevation;

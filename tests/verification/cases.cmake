@@ -88,3 +88,6 @@ pilempm_case_test(long_drivability_energy_levels cases/drivability/north-sea-mon
 # against the issue's aims) and a three-location version in CI.
 pilempm_case_test(long_isfog2020_study cases/drivability/isfog2020-study.yaml long)
 pilempm_case_test(validate_isfog2020_three_locations cases/drivability/isfog2020-study-three-locations.yaml validation)
+# Coupling verification 2 (issue 13): the rigid circular punch on an elastic half-space on
+# two graded grids (a/4, a/8; about 9 min on two threads, 16 on one): long.
+pilempm_case_test(long_rigid_punch cases/verification/rigid-punch.yaml long)

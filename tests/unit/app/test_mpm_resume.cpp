@@ -3,8 +3,8 @@
 // its wall time) and the VTK series (every .vtu and the .pvd), byte for byte. Checked for
 // a dynamic stage (the 1D wave, FLIP and APIC), for a run stopped in its quasi-static
 // stage that goes on to a dynamic one, for saturated soil stopped in a consolidation
-// pause and in the blow after it, for an FE pile jacked into the soil, and for a stop
-// during a verification's grid-sequence reruns.
+// pause and in the blow after it, for an FE pile jacked into the soil, on a graded grid,
+// and for a stop during a verification's grid-sequence reruns.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -204,6 +204,21 @@ TEST(MpmResume, RunStoppedInItsQuasiStaticStageResumedWritesWhatAnUninterruptedO
     const fs::path file = dir / "settle-then-blow.yaml";
     std::ofstream(file) << kSettleThenBlow;
     check_resume(dir, file.string(), SIGINT, 150);
+    fs::remove_all(dir);
+}
+
+// The same on a graded grid (cells of 0.25 m at the base to about 0.125 m at the top): the
+// checkpoint restores the grid's lines, not a spacing.
+TEST(MpmResume, AGradedGridRunStoppedMidwayResumedWritesWhatAnUninterruptedOneWrites) {
+    const fs::path dir = fresh_dir("graded");
+    std::string yaml = kSettleThenBlow;
+    const std::string uniform = "grid: {origin: [0.0, 0.0], size: [0.5, 5.0], cells: [2, 20]}";
+    yaml.replace(yaml.find(uniform), uniform.size(),
+                 "grid:\n  origin: [0.0, 0.0]\n  zones: {x: [{to: 0.5, cell: 0.25}],"
+                 " y: [{to: 2.0, cell: 0.25}, {to: 5.0, cell: 0.125}]}");
+    const fs::path file = dir / "graded-settle-then-blow.yaml";
+    std::ofstream(file) << yaml;
+    check_resume(dir, file.string(), SIGTERM, 450);
     fs::remove_all(dir);
 }
 

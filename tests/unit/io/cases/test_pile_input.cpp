@@ -156,3 +156,18 @@ TEST(PileInput, AToeSlipLineDoublesTheFieldsAndIsMeasuredInCells) {
     EXPECT_NE(water.find("pile.toe_slip_line"), std::string::npos) << water;
     EXPECT_NE(water.find("pore-water"), std::string::npos) << water;
 }
+
+TEST(PileInput, ACornerContactIsFullUnlessItAsksForTheOverlapsShare) {
+    const fs::path plain = write(jacking(), "corner_full");
+    const auto full = pio::build_mpm_run<2>(pio::read_mpm_case(plain.string()));
+    fs::remove(plain);
+    EXPECT_FALSE(full.pile.contact.corner_overlap_share);
+    const std::string with = replaced(jacking(), "  friction: 0.4", "  corner_contact: overlap\n  friction: 0.4");
+    const fs::path file = write(with, "corner_overlap");
+    const auto overlap = pio::build_mpm_run<2>(pio::read_mpm_case(file.string()));
+    fs::remove(file);
+    EXPECT_TRUE(overlap.pile.contact.corner_overlap_share);
+    const auto bad = error_of(replaced(with, "corner_contact: overlap", "corner_contact: area"), "corner_bad");
+    EXPECT_NE(bad.find("corner_contact"), std::string::npos) << bad;
+    EXPECT_NE(bad.find("overlap"), std::string::npos) << bad;
+}
