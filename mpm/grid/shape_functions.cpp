@@ -43,8 +43,11 @@ struct Hat1D {
     double plain;  // int N ds
 };
 
-// Exact integrals of the hat over [a, b] with weight w(s) = s (weighted) or 1: 2-point
-// Gauss on each piece between the hat's kinks (integrands are at most quadratic).
+// Exact integrals of the hat over [a, b] with weight w(s) = s (weighted) or 1, piece by
+// piece between the hat's kinks, where the hat is linear: the trapezoid for int N ds, its
+// two-point product rule for int N s ds, and the piece's constant slope times int w ds.
+// Closed forms, a third of the hat evaluations of Gauss points (profile: the graded and
+// axisymmetric weights spent 16 % of a step here).
 Hat1D integrate_hat(double xi, double hl, double hr, double a, double b, bool weighted) {
     const double kinks[3] = {xi - hl, xi, xi + hr};
     double cuts[5] = {a, 0, 0, 0, b};
@@ -53,16 +56,21 @@ Hat1D integrate_hat(double xi, double hl, double hr, double a, double b, bool we
         if (k > a && k < b) cuts[n++] = k;
     cuts[n] = b;
     Hat1D r{0.0, 0.0, 0.0};
-    const double g = 0.5 / std::sqrt(3.0);
+    double n_lo = hat(cuts[0], xi, hl, hr);
     for (int p = 0; p < n; ++p) {
-        const double lo = cuts[p], hi = cuts[p + 1], mid = 0.5 * (lo + hi), half = hi - lo;
-        for (double t : {-g, g}) {
-            const double s = mid + t * half, w = weighted ? s : 1.0;
-            // The slope is taken at the piece's midpoint: constant on each piece.
-            r.value += 0.5 * half * hat(s, xi, hl, hr) * w;
-            r.slope += 0.5 * half * hat_slope(mid, xi, hl, hr) * w;
-            r.plain += 0.5 * half * hat(s, xi, hl, hr);
+        const double lo = cuts[p], hi = cuts[p + 1], length = hi - lo;
+        const double n_hi = hat(hi, xi, hl, hr);
+        const double slope = hat_slope(0.5 * (lo + hi), xi, hl, hr);
+        const double plain = 0.5 * length * (n_lo + n_hi);
+        r.plain += plain;
+        if (weighted) {
+            r.value += length / 6.0 * (n_lo * (2.0 * lo + hi) + n_hi * (lo + 2.0 * hi));
+            r.slope += slope * 0.5 * length * (lo + hi);
+        } else {
+            r.value += plain;
+            r.slope += slope * length;
         }
+        n_lo = n_hi;
     }
     return r;
 }
