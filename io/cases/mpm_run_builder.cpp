@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/conventions.hpp"
@@ -14,6 +15,14 @@
 namespace pilempm::io {
 
 namespace {
+
+// A length to the millimetre, as a message shows it.
+std::string metres(double x) {
+    std::ostringstream out;
+    out.precision(3);
+    out << std::fixed << x;
+    return out.str();
+}
 
 template <int D>
 bool in_region(const MpmRegionInput& r, const double* x) {
@@ -150,6 +159,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         // Overlapping: a point's domain reaches into the steel (its centre in it: removed).
         std::vector<char> keep(m.particles.size(), 1);
         std::size_t overlapping = 0;
+        double highest_top = -1e300;  // m: the highest overlapping domain's top
         const auto& p0 = m.particles;
         for (std::size_t i = 0; i < p0.size(); ++i) {
             const double hr = 0.5 * p0.domain0[D * D * i], hz = 0.5 * p0.domain0[D * D * i + D * (D - 1) + D - 1];
@@ -160,12 +170,16 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             const double widest = outer_at(std::clamp(z + hz, 0.0, g.length()));  // over the domain's height
             if (r + hr <= g.inner_radius_at(zc) + touch || r - hr >= widest - touch) continue;
             ++overlapping;
+            highest_top = std::max(highest_top, p0.x[D * i + D - 1] + hz);
             if (z >= 0.0 && z <= g.length() && r >= g.inner_radius_at(z) && r <= outer_at(z)) keep[i] = 0;
         }
         if (overlapping > 0 && !c.pile.wished_in_place)
             throw CaseError(c.file, c.line_of("pile.toe_elevation"), "pile.toe_elevation",
                             "a pile that starts clear of the soil, or wished_in_place: true",
-                            std::to_string(overlapping) + " material points overlapping its wall");
+                            std::to_string(overlapping) + " material points overlapping its wall, reaching up to " +
+                                metres(highest_top) +
+                                " m (points fill whole grid cells: a region's top between two grid lines"
+                                " reaches the line above it)");
         m.particles.keep_only(keep);
     }
     for (const auto& b : c.boundaries) {

@@ -46,6 +46,7 @@ TEST(PileInput, APileStartingInTheSoilMustBeWishedInPlace) {
     const auto msg = error_of(embedded, "embedded");
     EXPECT_NE(msg.find("pile.toe_elevation"), std::string::npos) << msg;
     EXPECT_NE(msg.find("wished_in_place"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("reaching up to 6.000 m"), std::string::npos) << msg;  // the sand's surface
     // With it the case builds: the points whose centres lie in the steel go (none here:
     // the 20 mm wall lies between the centres 5 cm apart), the overlaps are ignored.
     const fs::path file = write(replaced(embedded, "  friction: 0.4", "  wished_in_place: true\n  friction: 0.4"), "wished");
