@@ -3,7 +3,7 @@
 40 g and load-tested, with and without its installation, against NEN 9997-1's base
 settlement lines:
 
-    centrifuge_study.py --out DIR [--cells-per-diameter N] [--container full|cut]
+    centrifuge_study.py --out DIR [--cells-per-diameter N] [--near-pile M] [--container full|cut]
                         [--sands medium,loose] [--models mohr_coulomb,hypoplastic]
                         [--pilempm build/pilempm] [--threads N] [--check]
 
@@ -17,6 +17,9 @@ DIR/<sand>-<model>-<installation> (pilempm run); a complete run of the same case
 newer than pilempm and the template, is read, not repeated. --cells-per-diameter: the grid
 (default 4, the template's); --container cut: the sand cut to 13 D in radius and 20 D below
 the final toe (default full: the container, 26 D and 50 D). CI runs D/2 in the cut one.
+--near-pile M: a graded grid, cells of D/M within 3 D of the axis and from 4 D below the
+final toe up (the soil the pile passes and its toe bears on), growing over 3 D to the
+D/N cells elsewhere (default: N, a uniform grid).
 
 DIR/centrifuge_base.csv    per run: the base capacity at 0.1 D and 0.2 D of base settlement,
                            the settlement at half the capacity, and the mean distance of the
@@ -85,8 +88,21 @@ def dry_density(e0):
     return round(1000.0 * G_S / (1.0 + e0), 1)
 
 
-def variant(template, sand, model, installation, per_d, container):
-    """The case of one sand, model and installation on cells of D / per_d."""
+def graded_grid(width, surface, top, final_toe, coarse, fine):
+    """Zones of cells of `fine` within 3 D of the axis and from 4 D under the final toe up,
+    grading over 3 D to `coarse` beyond; the surface on a grid line."""
+    near = round(math.ceil(3.0 * D / fine) * fine, 9)
+    fine_from = max(0.0, final_toe - 4.0 * D - 3.0 * D)
+    y0 = round(math.floor(fine_from / coarse) * coarse, 9)
+    x = [{"to": near, "cell": fine}, {"to": round(near + 3.0 * D, 9), "cell": coarse}, {"to": width, "cell": coarse}]
+    y = ([{"to": y0, "cell": coarse}] if y0 > 0.0 else []) + [
+        {"to": round(y0 + 3.0 * D, 9), "cell": fine}, {"to": surface, "cell": fine}, {"to": top, "cell": fine}]
+    return {"origin": [0.0, 0.0], "zones": {"x": x, "y": y}}
+
+
+def variant(template, sand, model, installation, per_d, container, near_pile=None):
+    """The case of one sand, model and installation on cells of D / per_d (D / near_pile by
+    the pile, graded, when given and finer)."""
     radius, below_toe = CONTAINERS[container]
     cell = D / per_d
     c = copy.deepcopy(template)
@@ -106,6 +122,10 @@ def variant(template, sand, model, installation, per_d, container):
                   + ("jacked 10 D at 40 g" if installation == "jacked" else "wished in place 20 D") + ", then the SLT")
     c["grid"] = {"origin": [0.0, 0.0], "size": [width, round((ny_soil + ny_above) * cell, 9)],
                  "cells": [nx, ny_soil + ny_above]}
+    if near_pile and near_pile > per_d:
+        c["grid"] = graded_grid(width, surface, round((ny_soil + ny_above) * cell, 9), surface - final_depth, cell,
+                                D / near_pile)
+        cell = D / near_pile  # the pile's elements follow the fine cells
     sand_material = c["materials"][0]
     if model == "mohr_coulomb":
         sand_material.update(density=dry_density(e0), youngs_modulus=youngs)
@@ -207,7 +227,8 @@ def study(args):
         for model in args.models:
             for installation in INSTALLATIONS:
                 name = name_of(sand, model, installation)
-                case = variant(template, sand, model, installation, args.cells_per_diameter, args.container)
+                case = variant(template, sand, model, installation, args.cells_per_diameter, args.container,
+                               args.near_pile)
                 out = study_runs.run_case(case, os.path.join(args.out, name), args.pilempm, args.threads, TEMPLATE)
                 s, q = slt_curve(out)
                 write_curve(out, s, q)
@@ -303,6 +324,7 @@ def main():
     ap = argparse.ArgumentParser(description="Validation 2: the centrifuge pile of seed 000 against NEN 9997-1")
     ap.add_argument("--out", required=True)
     ap.add_argument("--cells-per-diameter", type=int, default=4)
+    ap.add_argument("--near-pile", type=int, default=None)
     ap.add_argument("--container", choices=tuple(CONTAINERS), default="full")
     ap.add_argument("--sands", default="medium,loose")
     ap.add_argument("--models", default="mohr_coulomb,hypoplastic")
@@ -313,6 +335,9 @@ def main():
     args.sands, args.models = args.sands.split(","), args.models.split(",")
     if args.cells_per_diameter < 1:
         raise InputError(f"--cells-per-diameter: expected a whole number of at least 1, got {args.cells_per_diameter}")
+    if args.near_pile is not None and args.near_pile < args.cells_per_diameter:
+        raise InputError(f"--near-pile: expected at least --cells-per-diameter ({args.cells_per_diameter}), "
+                         f"got {args.near_pile}")
     for given, known, key in ((args.sands, SANDS, "--sands"), (args.models, MODELS, "--models")):
         bad = [x for x in given if x not in known]
         if bad:

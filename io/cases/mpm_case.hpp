@@ -135,6 +135,9 @@ struct MpmCase : CaseFile {
     std::array<bool, 3> refined_axes{true, true, true};  // the axes the sequence refines
     std::vector<std::string> converging;         // checks whose errors must converge on them
     std::vector<std::string> self_converging;    // checks whose values must converge (to any limit)
+    // tolerance_on: finest_grid holds only the finest grid's checks to their tolerance (a
+    // criterion stated on the finest of a sequence); the others are reported.
+    bool tolerance_on_finest_grid = false;
 };
 
 MpmCase read_mpm_case(const std::string& file);

@@ -384,6 +384,11 @@ MpmCase read_mpm_case(const std::string& file) {
             auto& names = k == "converging" ? c.converging : c.self_converging;
             for (std::size_t i = 0; i < list.size(); ++i) names.push_back(list[i].as<std::string>());
         }
+        if (v->has("tolerance_on")) {
+            c.tolerance_on_finest_grid = v->choice_or("tolerance_on", "every_grid", {"every_grid", "finest_grid"}) == "finest_grid";
+            if (c.tolerance_on_finest_grid && c.grid_sequence.empty())
+                v->fail("tolerance_on", "a grid_sequence whose finest grid the tolerance holds on", "none");
+        }
         v->finish();
     }
     root.finish();
