@@ -179,14 +179,15 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             // domain over the most of it that could be (the domain's chord along the face, or
             // the face itself where it is shorter, as a thin wall's tip). Full force here
             // pushed the soil beside a punch's rim away and held it.
-            const double along = xi <= 0.0 ? 1.0 : -1.0;  // the face runs from the node this way
-            const double fa = along * (t[0] * half[3] - t[1] * half[2]) / det;  // in (e1, e2)
-            const double fb = along * (t[1] * half[0] - t[0] * half[1]) / det;
-            double inside = 1e300, chord = 1e300;
-            if (fa != 0.0) inside = std::min(inside, ((fa > 0.0 ? 1.0 : -1.0) - a) / fa), chord = std::min(chord, 2.0 / std::abs(fa));
-            if (fb != 0.0) inside = std::min(inside, ((fb > 0.0 ? 1.0 : -1.0) - b) / fb), chord = std::min(chord, 2.0 / std::abs(fb));
-            if (settings_.corner_overlap_share)
+            if (settings_.corner_overlap_share) {
+                const double along = xi <= 0.0 ? 1.0 : -1.0;  // the face runs from the node this way
+                const double fa = along * (t[0] * half[3] - t[1] * half[2]) / det;  // in (e1, e2)
+                const double fb = along * (t[1] * half[0] - t[0] * half[1]) / det;
+                double inside = 1e300, chord = 1e300;
+                if (fa != 0.0) inside = std::min(inside, ((fa > 0.0 ? 1.0 : -1.0) - a) / fa), chord = std::min(chord, 2.0 / std::abs(fa));
+                if (fb != 0.0) inside = std::min(inside, ((fb > 0.0 ? 1.0 : -1.0) - b) / fb), chord = std::min(chord, 2.0 / std::abs(fb));
                 share = std::min(1.0, std::min(inside, face_length) / std::min(chord, face_length));
+            }
         } else {
             const double d = rel[0] * nrm[0] + rel[1] * nrm[1];
             const double reach = std::abs(half[0] * nrm[0] + half[1] * nrm[1]) + std::abs(half[2] * nrm[0] + half[3] * nrm[1]);
