@@ -271,7 +271,8 @@ def plot(out_dir, results, nen, per_d):
         colour = colours[(r["sand"], r["model"])]
         sd = [100.0 * x / D for x in r["s"]]
         ax1.plot(sd, [x / 1e3 for x in r["q"]], style, color=colour, label=r["name"])
-        ax2.plot([x / r["capacity"] for x in r["q"]], sd, style, color=colour, label=r["name"])
+        if r["capacity"] > 0.0:  # a toe that floated after unloading never reached the soil again
+            ax2.plot([x / r["capacity"] for x in r["q"]], sd, style, color=colour, label=r["name"])
     ax1.set_xlabel("base settlement s_b / D (%)")
     ax1.set_ylabel("base resistance (kN)")
     ax1.set_title(f"Static load tests at 40 g (cells of D/{per_d})")

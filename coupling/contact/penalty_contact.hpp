@@ -29,8 +29,9 @@ struct ContactSettings {
     // needs (the point and the segment's nodes as two masses on the spring,
     // omega dt <= stability_margin) is totals().stable_time_step.
     double penalty_factor = 4.0;
-    // omega dt of the contact's stiffest pair: 1, the margin the soil's CFL of 0.5 leaves
-    // its stiffest grid mode (central differences are stable to 2).
+    // omega dt of the contact's stiffest pair: 2 cfl, the margin the soil's CFL leaves its
+    // stiffest grid mode (central differences are stable to 2), so that the case's cfl
+    // scales the whole step, the contact's part of it too (1 at the default cfl of 0.5).
     double stability_margin = 1.0;
     double tangential_ratio = 1.0;  // k_t / k_n
     double ring = 1.0;              // master force per point force: 2 pi axisymmetric, 1 plane strain

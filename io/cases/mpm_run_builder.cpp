@@ -308,6 +308,9 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.steel = c.pile.pile.steel;
             pile.contact.friction = c.pile.friction;
             pile.contact.penalty_factor = c.pile.penalty_factor;
+            // The case's cfl is the share of the stable step taken, the contact's too: halving
+            // it halves the step wherever the contact sets it (a time-step convergence study).
+            pile.contact.stability_margin = 2.0 * c.cfl;
             pile.contact.corner_overlap_share = c.pile.corner_overlap_share;
             pile.contact.ring = full_ring(1.0);
             pile.contact.ignore_initial_overlap = c.pile.wished_in_place;

@@ -5,6 +5,7 @@
 // so a point near a free surface still cannot pass through the steel.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 #include "coupling/contact/penalty_contact.hpp"
@@ -50,4 +51,31 @@ TEST(ContactPenalty, StiffensInProportionToTheSoilsBulkModulus) {
 TEST(ContactPenalty, KeepsTheReferenceStiffnessBelowTheReferencePressure) {
     EXPECT_NEAR(normal_force(10e3) / normal_force(100e3), 1.0, 1e-12);
     EXPECT_NEAR(normal_force(400e3) / normal_force(100e3), 4.0, 1e-12);
+}
+
+// The contact's stable step: a point of mass m on a fixed surface is a mass on the spring
+// k_n = penalty_factor M V / h^2 (M = E (1 - nu) / ((1 + nu)(1 - 2 nu))), omega = sqrt(k_n / m),
+// and the step is stability_margin / omega: halving the margin (the case's cfl) halves it.
+TEST(ContactPenalty, ItsStableStepIsTheMarginOverThePointsFrequencyOnItsSpring) {
+    const double E = 20e6, nu = 0.3, mass = 0.7, half = 0.25 * kCell;
+    std::vector<std::unique_ptr<mpm::ConstitutiveModel>> materials;
+    materials.push_back(std::make_unique<mpm::LinearElastic>(E, nu));
+    mpm::Particles<2> points;
+    const double lengths[2] = {2 * half, 2 * half}, x[2] = {0.5, half - kOverlap};
+    points.add(x, mass, 4 * half * half, lengths, 0);
+    points.resize_state(materials[0]->num_state());
+    ContactSurface surface;
+    surface.x = {1.0, 0.0, 0.0, 0.0};
+    surface.v = {0.0, 0.0, 0.0, 0.0};
+    surface.add_segment(0, 1, SurfaceSide::Other);
+    const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    const double k = 4.0 * M * (4 * half * half) / (4 * half * half);  // the default factor 4, h = 2 half
+    for (double margin : {1.0, 0.5}) {
+        ContactSettings settings;
+        settings.stability_margin = margin;
+        PenaltyContact contact(settings);
+        contact.compute(points, mpm::ShapeKind::GIMP, surface, 1e-6, materials);
+        EXPECT_NEAR(points.external_force[1], k * kOverlap, 1e-9 * k * kOverlap);
+        EXPECT_NEAR(contact.totals().stable_time_step, margin / std::sqrt(k / mass), 1e-12 * margin / std::sqrt(k / mass));
+    }
 }

@@ -172,3 +172,17 @@ TEST(PileInput, ACornerContactIsFullUnlessItAsksForTheOverlapsShare) {
     EXPECT_NE(bad.find("corner_contact"), std::string::npos) << bad;
     EXPECT_NE(bad.find("overlap"), std::string::npos) << bad;
 }
+
+// The case's cfl is the share of the stable step taken by the contact too (omega dt = 2 cfl),
+// so halving it halves the coupled run's step wherever the contact sets it.
+TEST(PileInput, TheCasesCflScalesTheContactsStepToo) {
+    const fs::path plain = write(jacking(), "cfl_default");
+    const auto standard = pio::build_mpm_run<2>(pio::read_mpm_case(plain.string()));
+    fs::remove(plain);
+    EXPECT_DOUBLE_EQ(standard.pile.contact.stability_margin, 1.0);
+    const fs::path file = write(replaced(jacking(), "particles_per_cell: 2", "particles_per_cell: 2\ncfl: 0.25"), "cfl_quarter");
+    const auto halved = pio::build_mpm_run<2>(pio::read_mpm_case(file.string()));
+    fs::remove(file);
+    EXPECT_DOUBLE_EQ(halved.pile.contact.stability_margin, 0.5);
+    EXPECT_DOUBLE_EQ(halved.model.cfl, 0.25);
+}
