@@ -5,7 +5,7 @@ settlement lines:
 
     centrifuge_study.py --out DIR [--cells-per-diameter N] [--near-pile M] [--container full|cut]
                         [--sands medium,loose] [--models mohr_coulomb,hypoplastic]
-                        [--pilempm build/pilempm] [--threads N] [--check]
+                        [--cfl C] [--pilempm build/pilempm] [--threads N] [--check]
 
 Every run is derived from cases/jacking/centrifuge-huy2008.yaml (medium-dense sand,
 Mohr-Coulomb, jacked): the sand (medium dense, D_R 54 %, e0 0.68; loose, D_R 36 %, e0 0.75),
@@ -100,9 +100,10 @@ def graded_grid(width, surface, top, final_toe, coarse, fine):
     return {"origin": [0.0, 0.0], "zones": {"x": x, "y": y}}
 
 
-def variant(template, sand, model, installation, per_d, container, near_pile=None):
+def variant(template, sand, model, installation, per_d, container, near_pile=None, cfl=None):
     """The case of one sand, model and installation on cells of D / per_d (D / near_pile by
-    the pile, graded, when given and finer)."""
+    the pile, graded, when given and finer); cfl, when given, the share of the stable step
+    (the soil's and the contact's) taken."""
     radius, below_toe = CONTAINERS[container]
     cell = D / per_d
     c = copy.deepcopy(template)
@@ -148,6 +149,8 @@ def variant(template, sand, model, installation, per_d, container, near_pile=Non
         pile["toe_elevation"] = round(surface - final_depth, 9)
         c["stages"] = [by_name["geostatic"], slt]
     c["output"]["snapshot_interval"] = round(sum(s.get("duration", 0.0) for s in c["stages"]) / 12.0, 9)
+    if cfl is not None:
+        c["cfl"] = cfl
     return c
 
 
@@ -228,7 +231,7 @@ def study(args):
             for installation in INSTALLATIONS:
                 name = name_of(sand, model, installation)
                 case = variant(template, sand, model, installation, args.cells_per_diameter, args.container,
-                               args.near_pile)
+                               args.near_pile, args.cfl)
                 out = study_runs.run_case(case, os.path.join(args.out, name), args.pilempm, args.threads, TEMPLATE)
                 s, q = slt_curve(out)
                 write_curve(out, s, q)
@@ -331,11 +334,15 @@ def main():
     ap.add_argument("--models", default="mohr_coulomb,hypoplastic")
     ap.add_argument("--pilempm", default=os.path.join(ROOT, "build", "pilempm"))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--cfl", type=float, default=None,
+                    help="share of the stable step taken (default the case's 0.5): halve it to check the step")
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
     args.sands, args.models = args.sands.split(","), args.models.split(",")
     if args.cells_per_diameter < 1:
         raise InputError(f"--cells-per-diameter: expected a whole number of at least 1, got {args.cells_per_diameter}")
+    if args.cfl is not None and not 0.0 < args.cfl < 1.0:
+        raise InputError(f"--cfl: expected a number between 0 and 1, got {args.cfl}")
     if args.near_pile is not None and args.near_pile < args.cells_per_diameter:
         raise InputError(f"--near-pile: expected at least --cells-per-diameter ({args.cells_per_diameter}), "
                          f"got {args.near_pile}")

@@ -83,6 +83,9 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     const auto& mass = pile_.operators().lumped_mass;
     const int nodes = pile_.mesh().num_nodes();
     double jack_impulse = 0.0;  // up positive
+    double blow_impulse = 0.0;  // down positive
+    if (head.struck && enthru_stage_ != stage) enthru_ = 0.0, enthru_stage_ = stage;  // a new blow
+    if (!head.struck) enthru_ = 0.0, enthru_stage_ = -1;
     for (int s = 0; s < substeps_; ++s) {
         pile_.compute_internal_force();
         pile_.clear_external_force();
@@ -91,6 +94,13 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
             pile_.add_nodal_force(2 * i + 1, f[2 * i + 1] - mass[2 * i + 1] * gravity_ * gravity_factor_);
         }
         if (head.loaded) pile_.add_head_force(-target);
+        double f_blow = 0.0;
+        if (head.struck) {
+            // The hammer's force over the substep, at its mid-time (the blow starts with the stage).
+            f_blow = head.blow.at(time_in_stage + (s + 0.5) * sub);
+            pile_.add_head_force(-f_blow);
+            blow_impulse += f_blow * sub;
+        }
         pile_.advance_velocity(sub);
         if (head.driven) {
             // The jack sets the head plate's velocity: the impulse that takes is its force.
@@ -98,9 +108,11 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
             pile_.add_head_velocity(dv);
             jack_impulse += pile_.head_mass() * dv;
         }
+        const double head_before = pile_.head_displacement();
         pile_.advance_displacement(sub);
+        enthru_ -= f_blow * (pile_.head_displacement() - head_before);  // the force down, the head down
     }
-    head_force_ = head.loaded ? target : -jack_impulse / dt;
+    head_force_ = head.struck ? blow_impulse / dt : head.loaded ? target : -jack_impulse / dt;
 }
 
 void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage) {
@@ -125,6 +137,7 @@ std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() co
             {"contact_overlap", contact_.overlap()},
             {"contact_started", {contact_.started() ? 1.0 : 0.0}},
             {"pile_head_force", {head_force_}},
+            {"pile_enthru", {enthru_, static_cast<double>(enthru_stage_)}},
             {"contact_time_step", {contact_dt_}}};
 }
 
@@ -139,6 +152,8 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
     contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()), find("contact_overlap"),
                      find("contact_started").at(0) != 0.0);
     head_force_ = find("pile_head_force").at(0);
+    enthru_ = find("pile_enthru").at(0);
+    enthru_stage_ = static_cast<int>(find("pile_enthru").at(1));
     contact_dt_ = find("contact_time_step").at(0);
 }
 

@@ -16,6 +16,7 @@
 #include "coupling/contact/pile_surface.hpp"
 #include "coupling/driver/coupled_body.hpp"
 #include "fem/dynamics/explicit_pile.hpp"
+#include "fem/hammer/hammer.hpp"
 #include "mpm/solver/mpm_solver.hpp"
 
 namespace pilempm::coupling {
@@ -28,6 +29,9 @@ struct PileHeadControl {
     // s: the velocity (or force) goes over from the last stage's (0 when it had none) to
     // this one's as sin^2 over this time, so the jack does not ring the pile; 0: at once.
     double rise_time = 0.0;
+    // A blow: the hammer's force on the head from the stage's start (the head otherwise free).
+    bool struck = false;
+    fem::PrescribedForce blow;
 };
 
 // A slip line through the soil from the toe's outer corner (pile_surface.hpp, toe_slip_line):
@@ -77,6 +81,9 @@ public:
     int substeps() const { return substeps_; }
     // The jack's force on the head over the last step (N, compression positive; 0 when free).
     double head_force() const { return head_force_; }
+    // The hammer's work on the head since the blow's stage began (J, the whole ring): the
+    // energy it has put through the head, a PDA's ENTHRU; 0 outside blows.
+    double enthru() const { return enthru_; }
     double head_settlement() const { return -pile_.head_displacement(); }  // m, down positive
     // The pile's momentum (the whole ring; velocities at the last half step), N s.
     std::array<double, 2> momentum() const;
@@ -94,6 +101,8 @@ private:
     int substeps_ = 1;
     double contact_dt_ = 1e300;  // s: the step the contact allows (none yet)
     double head_force_ = 0.0;
+    double enthru_ = 0.0;     // J, this blow's so far
+    int enthru_stage_ = -1;   // the stage it counts
 };
 
 }  // namespace pilempm::coupling

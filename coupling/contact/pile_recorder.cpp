@@ -7,7 +7,7 @@ namespace pilempm::coupling {
 void PileRecorder::add_columns(std::vector<std::string>& columns) const {
     for (const char* c : {"pile_head_settlement_m", "pile_head_force_N", "outer_shaft_resistance_N",
                           "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
-                          "max_penetration_over_cell", "pile_toe_elevation_m"})
+                          "max_penetration_over_cell", "pile_toe_elevation_m", "pile_head_velocity_m_s", "enthru_J"})
         columns.push_back(c);
 }
 
@@ -28,6 +28,8 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     double toe = 1e300;
     for (std::size_t k = 1; k < x.size(); k += 2) toe = std::min(toe, x[k]);
     row.push_back(x.empty() ? pile_.frame().toe_elevation : toe);
+    row.push_back(-pile_.pile().head_velocity());  // down positive: with the head force, F and Z v of a blow
+    row.push_back(pile_.enthru());
 }
 
 }  // namespace pilempm::coupling

@@ -2,7 +2,7 @@
 // The coupled pile's columns in a run's history: the head's settlement and the jack's
 // force, the soil's axial resistance on the pile split into outer shaft, inner shaft and
 // base (the toe's annulus), the points in contact, those let go inside the pile and the
-// deepest penetration.
+// deepest penetration, the toe's elevation and the head's velocity (down positive).
 #include "coupling/contact/coupled_pile.hpp"
 #include "coupling/driver/recorders.hpp"
 

@@ -76,6 +76,8 @@ struct MpmStageInput {
     bool pile_loaded = false;       // the pile's head pushed by pile_force (a maintained load)
     double pile_force = 0.0;        // N, compression positive
     double pile_rise_time = 0.0;    // s over which the velocity or force changes from the last stage's
+    bool pile_struck = false;       // the case's hammer strikes the head at the stage's start (a blow)
+    int pile_line = 0;              // the stage's pile key, for errors found later
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
     double gravity_factor = 1.0;    // gravity over the case's in this stage (n g in a centrifuge)
 };
@@ -95,6 +97,10 @@ struct MpmPileInput {
     // length in grid cells (0: none) and the soil's friction angle across it, degrees.
     double slip_line_cells = 0.0;
     double slip_line_friction_angle = 0.0;
+    // The hammer of the stages with `pile: {blow: true}` (the top-level `hammer:` section,
+    // as the pile wave analysis reads it).
+    bool has_hammer = false;
+    HammerInput hammer;
     // Open at the toe (a tube; segments run head to toe), else closed-ended (solid there).
     bool open_ended() const {
         return !pile.segments.empty() && pile.segments.back().wall_thickness < 0.5 * pile.segments.back().outer_diameter;

@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse", "rigid_punch", "granular_runout",
+                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
                                           "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
                                           "poroelastic_wave_history",
@@ -168,18 +168,26 @@ MpmStageInput read_stage(MapReader m) {
     s.gravity_factor = m.number_or("gravity_factor", 1.0, positive("gravity over the case's (n for n g)"));
     if (!s.consolidation)
         if (auto pm = m.optional_map("pile")) {
-            // The pile's head in this stage: driven down at a velocity (0 holds it), or pushed
-            // by a force; else free.
-            if (pm->has("velocity") == pm->has("force"))
-                pm->fail("velocity", "one of velocity (m/s, down positive) or force (N, compression positive)",
-                         pm->has("velocity") ? "both" : "neither");
+            // The pile's head in this stage: driven down at a velocity (0 holds it), pushed by a
+            // force, or struck by the hammer at the stage's start (a blow); else free.
+            const int given = pm->has("velocity") + pm->has("force") + pm->has("blow");
+            if (given != 1)
+                pm->fail(pm->has("velocity") ? "velocity" : pm->has("force") ? "force" : "blow",
+                         "one of velocity (m/s, down positive), force (N, compression positive) or blow: true",
+                         given ? "more than one" : "none");
+            s.pile_line = m.line_of("pile");
             s.pile_driven = pm->has("velocity");
             s.pile_loaded = pm->has("force");
+            if (pm->has("blow")) {
+                if (!pm->boolean_or("blow", false)) pm->fail("blow", "true (the hammer strikes the head at the stage's start)", "false");
+                if (s.quasi_static) pm->fail("blow", "a dynamic stage (a blow is a wave in the pile)", "a quasi-static stage");
+                s.pile_struck = true;
+            }
             if (s.pile_driven)
                 s.pile_velocity = pm->number("velocity", {"a head velocity in m/s, down positive", [](double) { return true; }});
-            else
+            else if (s.pile_loaded)
                 s.pile_force = pm->number("force", {"a head force in N, compression positive", [](double) { return true; }});
-            s.pile_rise_time = pm->number_or("rise_time", 0.0, non_negative("a rise time in s"));
+            if (!s.pile_struck) s.pile_rise_time = pm->number_or("rise_time", 0.0, non_negative("a rise time in s"));
             pm->finish();
         }
     m.finish();
@@ -268,8 +276,23 @@ MpmCase read_mpm_case(const std::string& file) {
         if (p.pile.model != PileModel::Axisymmetric)
             throw CaseError(file, model_line, "pile.model", "axisymmetric (the wall's surface is the contact)", "rod");
     }
+    if (auto hm = root.optional_map("hammer")) {
+        // The hammer of the blows (stages with pile: {blow: true}): a force on the head.
+        if (!c.pile.present) hm->fail("type", "a pile for the hammer to strike (a pile: section)", "no pile");
+        const int type_line = hm->line_of("type");
+        read_hammer_section(std::move(*hm), c.pile.hammer, c);
+        if (c.pile.hammer.hammer.kind != fem::HammerKind::PrescribedForce)
+            throw CaseError(file, type_line, "hammer.type",
+                            "half_sine or force_table (a force on the head; the ram-cushion chain is not in the coupled model yet)",
+                            "ram_cushion");
+        c.pile.has_hammer = true;
+    }
     // Stages first: loads name the stages they act in.
     for (auto m : root.maps("stages")) c.stages.push_back(read_stage(std::move(m)));
+    for (const auto& st : c.stages)
+        if (st.pile_struck && !c.pile.has_hammer)
+            throw CaseError(file, st.pile_line, "stages." + st.name + ".pile.blow",
+                            "a hammer: section (half_sine or force_table) for the blow", "none");
     std::vector<std::string> stage_names;
     for (const auto& st : c.stages) stage_names.push_back(st.name);
     if (root.has("pressures"))
@@ -345,6 +368,14 @@ MpmCase read_mpm_case(const std::string& file) {
                                 "min_order", "absorbed_share", "load", "pore_tolerance", "punch_radius",
                                 "settlement_tolerance"})
             if (v->has(key)) c.verification[key] = v->number(key, {"a number", [](double) { return true; }});
+        // hammer_energy_into_pile: the half-sine's peak (N) and time (s), the pile's Z (N s/m)
+        // and the history's number of the blow's stage.
+        if (v->has("impulse_peak")) c.verification["impulse_peak"] = v->number("impulse_peak", positive("a peak force in N"));
+        if (v->has("impulse_time")) c.verification["impulse_time"] = v->number("impulse_time", positive("a pulse time in s"));
+        if (v->has("pile_impedance"))
+            c.verification["pile_impedance"] = v->number("pile_impedance", positive("an impedance E A / c in N s/m"));
+        if (v->has("blow_stage"))
+            c.verification["blow_stage"] = v->integer_or("blow_stage", 1, 1);
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
         if (v->has("pulse_duration"))

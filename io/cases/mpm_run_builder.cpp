@@ -324,7 +324,8 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             }
             pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
             for (const auto& st : c.stages)
-                pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_loaded, st.pile_force, st.pile_rise_time});
+                pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_loaded, st.pile_force, st.pile_rise_time,
+                                      st.pile_struck, st.pile_struck ? c.pile.hammer.hammer.force : fem::PrescribedForce{}});
         }
     }
     return run;

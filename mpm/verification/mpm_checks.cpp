@@ -168,6 +168,25 @@ VerificationCheck rigid_punch(const MpmCheckContext& c, const Table& history) {
                       true, "rigid smooth circular punch on an elastic half-space: w = P (1 - nu^2) / (2 a E)");
 }
 
+// A half-sine blow F0 sin(pi t / t_i) on the head of a pile whose head sees no reflection
+// before t_i (its stick-up above the soil and its length both longer than c t_i / 2): the
+// head moves at v = F / Z, so the hammer puts in F0^2 t_i / (2 Z) by the pulse's end: the
+// blow's ENTHRU (the hammer's work on the head, summed over the pile's substeps) at the end
+// of its stage.
+VerificationCheck hammer_energy(const MpmCheckContext& c, const Table& history) {
+    const char* check = "hammer_energy_into_pile";
+    const double peak = parameter(c, "impulse_peak", check), duration = parameter(c, "impulse_time", check);
+    const double impedance = parameter(c, "pile_impedance", check), stage = parameter(c, "blow_stage", check);
+    const auto& st = column(history, "stage");
+    const auto& enthru = column(history, "enthru_J");
+    double work = 0.0;
+    for (std::size_t i = 0; i < st.size(); ++i)
+        if (st[i] == stage) work = enthru[i];
+    // 0.5 %: the 1D closed form leaves out the wall's lateral inertia (0.05 to 0.1 % here).
+    return make_check("hammer_energy_into_pile_J", work, peak * peak * duration / (2.0 * impedance), 0.005, true,
+                      "half-sine blow on a pile head without reflections: F0^2 t_i / (2 Z)");
+}
+
 // An elastic layer loaded by gravity from zero stress between rollers has no lateral
 // strain: sigma_h = nu / (1 - nu) sigma_v in every horizontal direction (the hoop stress
 // too in axisymmetry). Points above a tenth of the largest sigma_v are left out: their
@@ -284,6 +303,7 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
         else if (name == "nil_step_displacement") out.push_back(nil_step_displacement<D>(m, x0));
         else if (name == "footing_collapse") out.push_back(footing(c, history, D));
         else if (name == "rigid_punch") out.push_back(rigid_punch(c, history));
+        else if (name == "hammer_energy_into_pile") out.push_back(hammer_energy(c, history));
         else if (name == "granular_runout") {
             auto v = runout<D>(c, m);
             out.insert(out.end(), v.begin(), v.end());

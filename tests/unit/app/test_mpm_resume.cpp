@@ -171,6 +171,20 @@ TEST(MpmResume, JackedPileStoppedMidwayResumedWritesWhatAnUninterruptedOneWrites
     fs::remove_all(dir);
 }
 
+TEST(MpmResume, ABlowOnTheCoupledPileStoppedInItsPulseResumedWritesWhatAnUninterruptedOneWrites) {
+    const fs::path dir = fresh_dir("coupled-blow");
+    // The blow verification with a geostatic stage of exactly 500 steps (a tolerance it does
+    // not reach), so the half-sine's some 19 steps begin at step 501: stopped inside it, the
+    // checkpoint carries the blow's ENTHRU so far.
+    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-blow-energy.yaml");
+    const std::string settle = "max_steps: 6000, tolerance: 1.0e-4";
+    yaml.replace(yaml.find(settle), settle.size(), "max_steps: 500, tolerance: 1.0e-12");
+    const fs::path file = dir / "blow.yaml";
+    std::ofstream(file) << yaml;
+    check_resume(dir, file.string(), SIGTERM, 510);
+    fs::remove_all(dir);
+}
+
 TEST(MpmResume, SaturatedRunStoppedInItsConsolidationPauseResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("pause");
     const fs::path file = dir / "blow-pause-blow.yaml";

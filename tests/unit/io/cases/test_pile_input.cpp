@@ -186,3 +186,29 @@ TEST(PileInput, TheCasesCflScalesTheContactsStepToo) {
     EXPECT_DOUBLE_EQ(halved.pile.contact.stability_margin, 0.5);
     EXPECT_DOUBLE_EQ(halved.model.cfl, 0.25);
 }
+
+// A blow needs the hammer that strikes it, a force on the head (the ram-cushion chain is not
+// in the coupled model yet) and a dynamic stage; each mistake names its key, and the blow
+// becomes the stage's head control with the hammer's pulse.
+TEST(PileInput, ABlowNeedsAHammerThatIsAForceInADynamicStage) {
+    const std::string blow = replaced(jacking(), "pile: {velocity: 0.0, rise_time: 0.05}", "pile: {blow: true}");
+    const auto none = error_of(blow, "blow_no_hammer");
+    EXPECT_NE(none.find("stages.hold.pile.blow"), std::string::npos) << none;
+    EXPECT_NE(none.find("hammer"), std::string::npos) << none;
+    const std::string hammer = "hammer: {type: half_sine, peak_force: 2.0e6, impulse_time: 0.001}\nstages:";
+    const std::string with = replaced(blow, "stages:", hammer);
+    const fs::path file = write(with, "blow");
+    const auto run = pio::build_mpm_run<2>(pio::read_mpm_case(file.string()));
+    fs::remove(file);
+    ASSERT_EQ(run.pile.heads.size(), 2u);
+    EXPECT_FALSE(run.pile.heads[0].struck);
+    EXPECT_TRUE(run.pile.heads[1].struck);
+    EXPECT_DOUBLE_EQ(run.pile.heads[1].blow.at(0.0005), 2.0e6);  // the half-sine's peak at t_i / 2
+    const auto chain = error_of(replaced(with, "{type: half_sine, peak_force: 2.0e6, impulse_time: 0.001}",
+                                         "{type: ram_cushion, ram: {mass: 1000.0}, drop_height: 1.0, hammer_cushion: {stiffness: 1.0e9, restitution: 0.8}}"),
+                                "blow_chain");
+    EXPECT_NE(chain.find("hammer.type"), std::string::npos) << chain;
+    EXPECT_NE(chain.find("ram_cushion"), std::string::npos) << chain;
+    const auto both = error_of(replaced(with, "pile: {blow: true}", "pile: {blow: true, velocity: 0.1}"), "blow_both");
+    EXPECT_NE(both.find("more than one"), std::string::npos) << both;
+}
