@@ -75,17 +75,24 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     const double length = pile_.mesh().z(pile_.mesh().head_nodes.front());
     const double omega1 = std::numbers::pi * pile_.steel().wave_speed() / (2.0 * length);
     pile_.set_stiffness_damping(m.local_damping > 0.0 ? 2.0 * 0.05 / omega1 : 0.0);
+    double blow_impulse = 0.0;  // down positive
+    if (head.struck && enthru_stage_ != stage) {
+        // A new blow: the ram meets the head where it now is.
+        enthru_ = 0.0, enthru_stage_ = stage;
+        chain_.reset();
+        if (head.hammer.kind == fem::HammerKind::RamCushion)
+            chain_.emplace(head.hammer.ram_cushion, head.ram_element_size, pile_.head_displacement());
+    }
+    if (!head.struck) enthru_ = 0.0, enthru_stage_ = -1, chain_.reset();
     // Subcycles of the pile inside the soil's step, the contact force held over them.
-    const double pile_dt = 0.95 * pile_.damped_stable_time_step();
+    double pile_dt = 0.95 * pile_.damped_stable_time_step();
+    if (chain_) pile_dt = std::min(pile_dt, 0.95 * chain_->stable_time_step(pile_.head_mass(), pile_.operators().max_frequency));
     substeps_ = std::max(1, static_cast<int>(std::ceil(dt / pile_dt)));
     const double sub = dt / substeps_;
     const auto& f = contact_.nodal_force();
     const auto& mass = pile_.operators().lumped_mass;
     const int nodes = pile_.mesh().num_nodes();
     double jack_impulse = 0.0;  // up positive
-    double blow_impulse = 0.0;  // down positive
-    if (head.struck && enthru_stage_ != stage) enthru_ = 0.0, enthru_stage_ = stage;  // a new blow
-    if (!head.struck) enthru_ = 0.0, enthru_stage_ = -1;
     for (int s = 0; s < substeps_; ++s) {
         pile_.compute_internal_force();
         pile_.clear_external_force();
@@ -95,13 +102,20 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         }
         if (head.loaded) pile_.add_head_force(-target);
         double f_blow = 0.0;
-        if (head.struck) {
+        if (chain_) {
+            chain_->compute_forces(pile_);  // the cushions' forces at t_n on the head
+        } else if (head.struck) {
             // The hammer's force over the substep, at its mid-time (the blow starts with the stage).
-            f_blow = head.blow.at(time_in_stage + (s + 0.5) * sub);
+            f_blow = head.hammer.force.at(time_in_stage + (s + 0.5) * sub);
             pile_.add_head_force(-f_blow);
-            blow_impulse += f_blow * sub;
         }
         pile_.advance_velocity(sub);
+        if (chain_) {
+            chain_->advance_velocity(sub);
+            chain_->resolve_contacts(sub, pile_);  // a ram or helmet resting on the head: its impulse
+            f_blow = chain_->force_on_head();
+        }
+        blow_impulse += f_blow * sub;
         if (head.driven) {
             // The jack sets the head plate's velocity: the impulse that takes is its force.
             const double dv = -target - pile_.head_velocity();
@@ -110,6 +124,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         }
         const double head_before = pile_.head_displacement();
         pile_.advance_displacement(sub);
+        if (chain_) chain_->advance_displacement(sub);
         enthru_ -= f_blow * (pile_.head_displacement() - head_before);  // the force down, the head down
     }
     head_force_ = head.struck ? blow_impulse / dt : head.loaded ? target : -jack_impulse / dt;
@@ -138,6 +153,7 @@ std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() co
             {"contact_started", {contact_.started() ? 1.0 : 0.0}},
             {"pile_head_force", {head_force_}},
             {"pile_enthru", {enthru_, static_cast<double>(enthru_stage_)}},
+            {"hammer_chain", chain_ ? chain_->state() : std::vector<double>{}},
             {"contact_time_step", {contact_dt_}}};
 }
 
@@ -154,6 +170,14 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
     head_force_ = find("pile_head_force").at(0);
     enthru_ = find("pile_enthru").at(0);
     enthru_stage_ = static_cast<int>(find("pile_enthru").at(1));
+    // A blow's chain back as it was: rebuilt from its stage's spec, then its state.
+    chain_.reset();
+    const auto& chain = find("hammer_chain");
+    if (!chain.empty()) {
+        const PileHeadControl& h = head_.at(static_cast<std::size_t>(enthru_stage_));
+        chain_.emplace(h.hammer.ram_cushion, h.ram_element_size, 0.0);
+        chain_->restore(chain);
+    }
     contact_dt_ = find("contact_time_step").at(0);
 }
 

@@ -8,6 +8,7 @@
 // set force (a maintained load test).
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,9 +30,12 @@ struct PileHeadControl {
     // s: the velocity (or force) goes over from the last stage's (0 when it had none) to
     // this one's as sin^2 over this time, so the jack does not ring the pile; 0: at once.
     double rise_time = 0.0;
-    // A blow: the hammer's force on the head from the stage's start (the head otherwise free).
+    // A blow: the hammer strikes the head at the stage's start (the head otherwise free):
+    // a prescribed force, or a ram-cushion chain stepped with the pile (its rod elements
+    // the pile's element size).
     bool struck = false;
-    fem::PrescribedForce blow;
+    fem::HammerSpec hammer;
+    double ram_element_size = 0.0;  // m
 };
 
 // A slip line through the soil from the toe's outer corner (pile_surface.hpp, toe_slip_line):
@@ -103,6 +107,7 @@ private:
     double head_force_ = 0.0;
     double enthru_ = 0.0;     // J, this blow's so far
     int enthru_stage_ = -1;   // the stage it counts
+    std::optional<fem::HammerChain> chain_;  // a ram-cushion blow's hammer, from its impact on
 };
 
 }  // namespace pilempm::coupling

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace pilempm::fem {
 
@@ -181,6 +182,30 @@ void HammerChain::advance_displacement(double dt) {
         u_[i] += dt * v_[i];
         gravity_work_ -= m_[i] * gravity_ * dt * v_[i];
     }
+}
+
+std::vector<double> HammerChain::state() const {
+    std::vector<double> s;
+    for (const auto* a : {&u_, &v_, &v_previous_, &f_}) s.insert(s.end(), a->begin(), a->end());
+    for (const auto& l : links_) s.insert(s.end(), {l.max_compression, l.force, l.compression, l.absorbed, l.approach});
+    s.insert(s.end(), {head_force_, contact_loss_, gravity_work_, impact_energy_});
+    return s;
+}
+
+void HammerChain::restore(const std::vector<double>& s) {
+    const std::size_t n = m_.size(), expected = 4 * n + 5 * links_.size() + 4;
+    if (s.size() != expected)
+        throw std::invalid_argument("the hammer's state has " + std::to_string(s.size()) + " values, its chain " +
+                                    std::to_string(expected));
+    auto at = s.begin();
+    for (auto* a : {&u_, &v_, &v_previous_, &f_}) {
+        std::copy(at, at + static_cast<long>(n), a->begin());
+        at += static_cast<long>(n);
+    }
+    for (auto& l : links_) {
+        l.max_compression = *at++, l.force = *at++, l.compression = *at++, l.absorbed = *at++, l.approach = *at++;
+    }
+    head_force_ = *at++, contact_loss_ = *at++, gravity_work_ = *at++, impact_energy_ = *at++;
 }
 
 double HammerChain::kinetic_energy() const {

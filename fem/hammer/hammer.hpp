@@ -90,6 +90,11 @@ public:
     double ram_impedance() const { return ram_impedance_; }
     int ram_nodes() const { return ram_nodes_; }
     const std::vector<double>& velocity() const { return v_; }
+    // The whole state (positions, velocities, forces, the cushions' history, the energy
+    // ledger) as one array, and back into a chain built from the same spec: a run stopped
+    // inside a blow resumes exactly.
+    std::vector<double> state() const;
+    void restore(const std::vector<double>& state);
 
 private:
     enum class LinkKind { Rod, Cushion, Contact };

@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "granular_runout",
+                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "ram_energy_into_pile", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
                                           "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
                                           "poroelastic_wave_history",
@@ -277,14 +277,10 @@ MpmCase read_mpm_case(const std::string& file) {
             throw CaseError(file, model_line, "pile.model", "axisymmetric (the wall's surface is the contact)", "rod");
     }
     if (auto hm = root.optional_map("hammer")) {
-        // The hammer of the blows (stages with pile: {blow: true}): a force on the head.
+        // The hammer of the blows (stages with pile: {blow: true}): a force on the head or a
+        // ram-cushion chain, as pile wave analysis reads it.
         if (!c.pile.present) hm->fail("type", "a pile for the hammer to strike (a pile: section)", "no pile");
-        const int type_line = hm->line_of("type");
         read_hammer_section(std::move(*hm), c.pile.hammer, c);
-        if (c.pile.hammer.hammer.kind != fem::HammerKind::PrescribedForce)
-            throw CaseError(file, type_line, "hammer.type",
-                            "half_sine or force_table (a force on the head; the ram-cushion chain is not in the coupled model yet)",
-                            "ram_cushion");
         c.pile.has_hammer = true;
     }
     // Stages first: loads name the stages they act in.
@@ -292,7 +288,7 @@ MpmCase read_mpm_case(const std::string& file) {
     for (const auto& st : c.stages)
         if (st.pile_struck && !c.pile.has_hammer)
             throw CaseError(file, st.pile_line, "stages." + st.name + ".pile.blow",
-                            "a hammer: section (half_sine or force_table) for the blow", "none");
+                            "a hammer: section (half_sine, force_table or ram_cushion) for the blow", "none");
     std::vector<std::string> stage_names;
     for (const auto& st : c.stages) stage_names.push_back(st.name);
     if (root.has("pressures"))
@@ -374,6 +370,12 @@ MpmCase read_mpm_case(const std::string& file) {
         if (v->has("impulse_time")) c.verification["impulse_time"] = v->number("impulse_time", positive("a pulse time in s"));
         if (v->has("pile_impedance"))
             c.verification["pile_impedance"] = v->number("pile_impedance", positive("an impedance E A / c in N s/m"));
+        // ram_energy_into_pile: the rigid ram's mass (kg), impact velocity (m/s) and the time
+        // after impact the energy is read at (s), with pile_impedance and blow_stage.
+        if (v->has("ram_mass")) c.verification["ram_mass"] = v->number("ram_mass", positive("a ram mass in kg"));
+        if (v->has("impact_velocity"))
+            c.verification["impact_velocity"] = v->number("impact_velocity", positive("an impact velocity in m/s"));
+        if (v->has("at_time")) c.verification["at_time"] = v->number("at_time", positive("a time after impact in s"));
         if (v->has("blow_stage"))
             c.verification["blow_stage"] = v->integer_or("blow_stage", 1, 1);
         if (v->has("front_thickness"))

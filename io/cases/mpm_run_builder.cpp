@@ -325,7 +325,8 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.gravity = c.pile.self_weight ? c.gravity : 0.0;
             for (const auto& st : c.stages)
                 pile.heads.push_back({st.pile_driven, st.pile_velocity, st.pile_loaded, st.pile_force, st.pile_rise_time,
-                                      st.pile_struck, st.pile_struck ? c.pile.hammer.hammer.force : fem::PrescribedForce{}});
+                                      st.pile_struck, st.pile_struck ? c.pile.hammer.hammer : fem::HammerSpec{},
+                                      c.pile.pile.element_size});
         }
     }
     return run;

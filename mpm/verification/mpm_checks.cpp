@@ -187,6 +187,43 @@ VerificationCheck hammer_energy(const MpmCheckContext& c, const Table& history) 
                       "half-sine blow on a pile head without reflections: F0^2 t_i / (2 Z)");
 }
 
+// A rigid ram (mass m, striking at v0, no cushion) on the head of a pile of impedance Z that
+// sends no wave back before T: m dv/dt = m g - Z v, so v = a + (v0 - a) e^{-t / tau} with
+// a = m g / Z, tau = m / Z, and the ram has put Z int_0^T v^2 dt through the head by T:
+// a^2 T + 2 a b tau (1 - e^{-T/tau}) + b^2 tau / 2 (1 - e^{-2T/tau}) times Z, b = v0 - a.
+// The blow's ENTHRU at T (linear between the rows around it) against it; the head plate's
+// mass takes its share of the impact (m_head / m of the energy), so it converges with the
+// pile's elements.
+VerificationCheck ram_energy(const MpmCheckContext& c, const Table& history) {
+    const char* check = "ram_energy_into_pile";
+    const double m = parameter(c, "ram_mass", check), v0 = parameter(c, "impact_velocity", check);
+    const double z = parameter(c, "pile_impedance", check), stage = parameter(c, "blow_stage", check);
+    const double at = parameter(c, "at_time", check);
+    const double a = m * c.gravity / z, b = v0 - a, tau = m / z;
+    const double reference = z * (a * a * at + 2.0 * a * b * tau * (1.0 - std::exp(-at / tau)) +
+                                  0.5 * b * b * tau * (1.0 - std::exp(-2.0 * at / tau)));
+    const auto& st = column(history, "stage");
+    const auto& t = column(history, "time_s");
+    const auto& enthru = column(history, "enthru_J");
+    // The stage began a step before its first row (a quasi-static stage before it leaves its
+    // pseudo-time in its own last row): the rows from there, ENTHRU 0 at the start.
+    std::vector<double> time{0.0}, work_at{0.0};
+    for (std::size_t i = 0; i < st.size(); ++i)
+        if (st[i] == stage) time.push_back(t[i]), work_at.push_back(enthru[i]);
+    if (time.size() > 2) time[0] = 2.0 * time[1] - time[2];
+    double work = 0.0;
+    bool found = false;
+    for (std::size_t i = 1; i < time.size() && !found; ++i)
+        if (time[i] - time[0] >= at) {
+            const double w = (at - (time[i - 1] - time[0])) / (time[i] - time[i - 1]);
+            work = work_at[i - 1] * (1.0 - w) + work_at[i] * w;
+            found = true;
+        }
+    if (!found) throw std::invalid_argument("ram_energy_into_pile: the blow's stage ends before at_time");
+    return make_check("ram_energy_into_pile_J", work, reference, 0.01, true,
+                      "rigid ram on a pile head without reflections: Z int v^2 dt, m dv/dt = m g - Z v");
+}
+
 // An elastic layer loaded by gravity from zero stress between rollers has no lateral
 // strain: sigma_h = nu / (1 - nu) sigma_v in every horizontal direction (the hoop stress
 // too in axisymmetry). Points above a tenth of the largest sigma_v are left out: their
@@ -304,6 +341,7 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
         else if (name == "footing_collapse") out.push_back(footing(c, history, D));
         else if (name == "rigid_punch") out.push_back(rigid_punch(c, history));
         else if (name == "hammer_energy_into_pile") out.push_back(hammer_energy(c, history));
+        else if (name == "ram_energy_into_pile") out.push_back(ram_energy(c, history));
         else if (name == "granular_runout") {
             auto v = runout<D>(c, m);
             out.insert(out.end(), v.begin(), v.end());

@@ -54,6 +54,7 @@ pilempm_case_test(verify_skempton_b_compressible cases/verification/skempton-b-c
 pilempm_case_test(verify_terzaghi_under_pile cases/verification/terzaghi-under-pile.yaml verification)
 # A hammer blow on the coupled pile (issue 14): the half-sine's energy into the head.
 pilempm_case_test(verify_coupled_blow_energy cases/verification/coupled-blow-energy.yaml verification)
+pilempm_case_test(verify_coupled_ram_blow_energy cases/verification/coupled-ram-blow-energy.yaml verification)
 # Validation 3 (issue 13): seed 002's shaft capacity, jacked over wished in place, against
 # the paper's trends, the six models of Table 2 at the paper's D/4. Not met yet (the soil
 # leaves the shaft above the toe, README), so not in CI: label long.

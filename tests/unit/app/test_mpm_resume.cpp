@@ -171,18 +171,31 @@ TEST(MpmResume, JackedPileStoppedMidwayResumedWritesWhatAnUninterruptedOneWrites
     fs::remove_all(dir);
 }
 
-TEST(MpmResume, ABlowOnTheCoupledPileStoppedInItsPulseResumedWritesWhatAnUninterruptedOneWrites) {
-    const fs::path dir = fresh_dir("coupled-blow");
-    // The blow verification with a geostatic stage of exactly 500 steps (a tolerance it does
-    // not reach), so the half-sine's some 19 steps begin at step 501: stopped inside it, the
-    // checkpoint carries the blow's ENTHRU so far.
-    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-blow-energy.yaml");
+// A blow verification case with a geostatic stage of exactly 500 steps (a tolerance it does
+// not reach), so the blow begins at step 501: stopped 10 steps into it, the checkpoint must
+// carry the blow's ENTHRU so far and, for a ram, the hammer chain (the ram's position and
+// velocity, the contact's state, its energy ledger).
+namespace {
+
+void check_blow_resume(const std::string& name, const std::string& case_file, int signal) {
+    const fs::path dir = fresh_dir(name);
+    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/" + case_file);
     const std::string settle = "max_steps: 6000, tolerance: 1.0e-4";
     yaml.replace(yaml.find(settle), settle.size(), "max_steps: 500, tolerance: 1.0e-12");
-    const fs::path file = dir / "blow.yaml";
+    const fs::path file = dir / case_file;
     std::ofstream(file) << yaml;
-    check_resume(dir, file.string(), SIGTERM, 510);
+    check_resume(dir, file.string(), signal, 510);
     fs::remove_all(dir);
+}
+
+}  // namespace
+
+TEST(MpmResume, ABlowOnTheCoupledPileStoppedInItsPulseResumedWritesWhatAnUninterruptedOneWrites) {
+    check_blow_resume("coupled-blow", "coupled-blow-energy.yaml", SIGTERM);
+}
+
+TEST(MpmResume, ARamOnTheCoupledPileStoppedAsItRidesTheHeadResumedWritesWhatAnUninterruptedOneWrites) {
+    check_blow_resume("coupled-ram", "coupled-ram-blow-energy.yaml", SIGINT);
 }
 
 TEST(MpmResume, SaturatedRunStoppedInItsConsolidationPauseResumedWritesWhatAnUninterruptedOneWrites) {

@@ -187,10 +187,10 @@ TEST(PileInput, TheCasesCflScalesTheContactsStepToo) {
     EXPECT_DOUBLE_EQ(halved.model.cfl, 0.25);
 }
 
-// A blow needs the hammer that strikes it, a force on the head (the ram-cushion chain is not
-// in the coupled model yet) and a dynamic stage; each mistake names its key, and the blow
-// becomes the stage's head control with the hammer's pulse.
-TEST(PileInput, ABlowNeedsAHammerThatIsAForceInADynamicStage) {
+// A blow needs the hammer that strikes it and a dynamic stage; each mistake names its key,
+// and the blow becomes the stage's head control with the hammer: a force on the head, or
+// the ram-cushion chain with the pile's element size for an elastic ram's rods.
+TEST(PileInput, ABlowNeedsAHammerAndADynamicStage) {
     const std::string blow = replaced(jacking(), "pile: {velocity: 0.0, rise_time: 0.05}", "pile: {blow: true}");
     const auto none = error_of(blow, "blow_no_hammer");
     EXPECT_NE(none.find("stages.hold.pile.blow"), std::string::npos) << none;
@@ -203,12 +203,20 @@ TEST(PileInput, ABlowNeedsAHammerThatIsAForceInADynamicStage) {
     ASSERT_EQ(run.pile.heads.size(), 2u);
     EXPECT_FALSE(run.pile.heads[0].struck);
     EXPECT_TRUE(run.pile.heads[1].struck);
-    EXPECT_DOUBLE_EQ(run.pile.heads[1].blow.at(0.0005), 2.0e6);  // the half-sine's peak at t_i / 2
-    const auto chain = error_of(replaced(with, "{type: half_sine, peak_force: 2.0e6, impulse_time: 0.001}",
-                                         "{type: ram_cushion, ram: {mass: 1000.0}, drop_height: 1.0, hammer_cushion: {stiffness: 1.0e9, restitution: 0.8}}"),
-                                "blow_chain");
-    EXPECT_NE(chain.find("hammer.type"), std::string::npos) << chain;
-    EXPECT_NE(chain.find("ram_cushion"), std::string::npos) << chain;
+    EXPECT_DOUBLE_EQ(run.pile.heads[1].hammer.force.at(0.0005), 2.0e6);  // the half-sine's peak at t_i / 2
+    const fs::path chain_file = write(replaced(with, "{type: half_sine, peak_force: 2.0e6, impulse_time: 0.001}",
+                                               "{type: ram_cushion, ram: {mass: 1000.0}, impact_velocity: 3.0}"),
+                                      "blow_chain");
+    const auto chain = pio::build_mpm_run<2>(pio::read_mpm_case(chain_file.string()));
+    fs::remove(chain_file);
+    EXPECT_EQ(chain.pile.heads[1].hammer.kind, pilempm::fem::HammerKind::RamCushion);
+    EXPECT_DOUBLE_EQ(chain.pile.heads[1].hammer.ram_cushion.impact_velocity, 3.0);
+    EXPECT_DOUBLE_EQ(chain.pile.heads[1].ram_element_size, 0.05);
     const auto both = error_of(replaced(with, "pile: {blow: true}", "pile: {blow: true, velocity: 0.1}"), "blow_both");
     EXPECT_NE(both.find("more than one"), std::string::npos) << both;
+    const auto settled = error_of(replaced(with, "{name: hold, type: dynamic, duration: 0.2, local_damping: 0.7, pile: {blow: true}}",
+                                           "{name: hold, type: quasi_static, pile: {blow: true}}"),
+                                  "blow_quasi_static");
+    EXPECT_NE(settled.find("blow"), std::string::npos) << settled;
+    EXPECT_NE(settled.find("dynamic"), std::string::npos) << settled;
 }
