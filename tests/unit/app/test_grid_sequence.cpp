@@ -18,13 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_file(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The tolerance_kind written for the check called exactly `name`.
 std::string kind_of(const std::string& json, const std::string& name) {
     const auto at = json.find("\"name\": \"" + name + "\"");
@@ -49,7 +42,7 @@ TEST(GridSequence, TheToleranceOnTheFinestGridReportsTheCoarserOnes) {
                                        .c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0);
-    const std::string json = read_file(dir / "out" / "verification.json");
+    const std::string json = case_text::file_text(dir / "out" / "verification.json");
     EXPECT_EQ(kind_of(json, "wave_travel_time_between_probes_s"), "reported") << json;
     EXPECT_EQ(kind_of(json, "wave_travel_time_between_probes_s_grid_1x160"), "relative") << json;
     EXPECT_EQ(kind_of(json, "wave_travel_time_between_probes_s_observed_order"), "at_least") << json;

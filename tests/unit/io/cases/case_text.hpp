@@ -16,11 +16,16 @@
 
 namespace case_text {
 
-inline std::string shipped(const std::string& relative_path) {
-    std::ifstream in(std::string(PILEMPM_SOURCE_DIR) + "/" + relative_path);
+// A file's whole text ("" when it cannot be read).
+inline std::string file_text(const std::filesystem::path& file) {
+    std::ifstream in(file);
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+inline std::string shipped(const std::string& relative_path) {
+    return file_text(std::string(PILEMPM_SOURCE_DIR) + "/" + relative_path);
 }
 
 // `text` with its first `from` replaced by `to` (a test failure when `from` is missing).
