@@ -9,6 +9,10 @@ pile_probes.png           with probes: each probe's radial stress over its initi
                           its volumetric strain against its height above the toe over the
                           pile's radius, h / R (negative while the toe is above it), as
                           calibration-chamber sensors are shown (Jardine et al. 2013).
+pile_driving.png          with a drive (blows.csv): blows per 0.25 m and cumulative blows
+                          against toe depth, as the drivability sheet draws them (depth
+                          down), and per blow the set, the largest compression and tension
+                          in the steel and ENTHRU.
 
 Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
 """
@@ -106,7 +110,38 @@ def plot_probes(out_dir):
     plt.close(fig)
 
 
+def plot_driving(out_dir):
+    blows_csv = os.path.join(out_dir, "blows.csv")
+    if not os.path.exists(blows_csv):
+        return
+    b = read_columns(blows_csv, ["blow", "toe_depth_m", "set_m", "max_compression_Pa", "max_tension_Pa", "enthru_J"])
+    c = read_columns(os.path.join(out_dir, "blow_count.csv"),
+                     ["depth_top_m", "depth_bottom_m", "blows", "cumulative_blows"])
+    fig, axes = plt.subplots(1, 4, figsize=(13, 6.5), sharey=True)
+    for top, bottom, n in zip(c["depth_top_m"], c["depth_bottom_m"], c["blows"]):
+        axes[0].plot([n, n], [top, bottom], "b-", lw=1.6)
+    axes[0].set_xlabel("Blows per 0.25 m")
+    axes[1].plot(c["cumulative_blows"], c["depth_bottom_m"], "k.-")
+    axes[1].set_xlabel("Cumulative blows")
+    axes[2].plot([1e3 * x for x in b["set_m"]], b["toe_depth_m"], "g.-")
+    axes[2].set_xlabel("Set per blow (mm)")
+    axes[3].plot([x / 1e6 for x in b["max_compression_Pa"]], b["toe_depth_m"], "r.-", label="compression")
+    axes[3].plot([x / 1e6 for x in b["max_tension_Pa"]], b["toe_depth_m"], "m.--", label="tension")
+    axes[3].set_xlabel("Largest axial stress in the blow (MPa)")
+    axes[3].legend(fontsize=8)
+    axes[0].set_ylabel("Toe depth (m)")
+    axes[0].invert_yaxis()
+    for ax in axes:
+        ax.grid(True, alpha=0.4)
+    fig.suptitle(f"Coupled drive: {len(b['blow'])} blows, ENTHRU {min(b['enthru_J']) / 1e3:.3g} to "
+                 f"{max(b['enthru_J']) / 1e3:.3g} kJ")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "pile_driving.png"), dpi=120)
+    plt.close(fig)
+
+
 def plot(out_dir):
+    plot_driving(out_dir)
     plot_load_settlement(out_dir)
     plot_tractions(out_dir)
     plot_probes(out_dir)

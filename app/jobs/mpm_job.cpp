@@ -9,11 +9,13 @@
 
 #include "app/jobs/verification_runner.hpp"
 #include "core/table.hpp"
+#include "coupling/contact/blow_table.hpp"
 #include "coupling/contact/coupled_pile.hpp"
 #include "coupling/contact/pile_recorder.hpp"
 #include "coupling/driver/stage_driver.hpp"
 #include "io/cases/mpm_case.hpp"
 #include "io/cases/mpm_run_builder.hpp"
+#include "io/hdf5/hdf5_results.hpp"
 #include "io/hdf5/run_checkpoint.hpp"
 #include "io/writers/csv_writer.hpp"
 #include "io/writers/json_writer.hpp"
@@ -51,6 +53,47 @@ struct AttachedPile {
         }
     }
 };
+
+// The seabed (m, the soil's frame) that depths count from: the K0 state's surface, else the
+// top of the highest material point's domain at the start.
+template <int D>
+double ground_elevation(const io::MpmCase& c, const io::MpmRun<D>& run) {
+    if (c.k0_initial_stress) return c.surface;
+    double top = -1e300;
+    for (std::size_t k = D - 1; k < run.x0.size(); k += D) top = std::max(top, run.x0[k]);
+    return top + 0.5 * run.model.grid.spacing[D - 1] / c.per_cell;
+}
+
+// A drive's record (blows.csv, blow_count.csv, blow_wall_times.csv, and results.h5 with the
+// pile's mesh and final state): nothing when the case drives no blows.
+template <int D>
+void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history,
+                        const io::MpmRunOutput<D>& output, const coupling::CoupledPile& coupled,
+                        const fs::path& dir) {
+    std::vector<coupling::BlowStage> blows;
+    for (std::size_t k = 0; k < c.stages.size(); ++k)
+        if (c.stages[k].blow) blows.push_back({static_cast<int>(k) + 1, c.stages[k].blow_number});
+    if (blows.empty()) return;
+    const Table table = coupling::blow_table(history, blows, ground_elevation(c, run));
+    const Table count = coupling::blow_count_table(table);
+    io::write_csv(dir / "blows.csv", table);
+    io::write_csv(dir / "blow_count.csv", count);
+    // Wall time per blow and pause of this invocation (not in blows.csv: a resumed run's
+    // tables are the uninterrupted one's to the byte).
+    Table walls("blow_wall_times", {"stage", "blow", "pause", "wall_time_s"});
+    for (const auto& w : output.stage_wall_times()) {
+        const auto& st = c.stages[static_cast<std::size_t>(w.stage)];
+        if (st.drive >= 0) walls.add_row({w.stage + 1.0, static_cast<double>(st.blow_number), st.blow ? 0.0 : 1.0, w.wall});
+    }
+    io::write_csv(dir / "blow_wall_times.csv", walls);
+    std::vector<double> stress;
+    coupled.pile().axial_stress(stress);
+    fem::PileMesh placed = run.pile.mesh;
+    for (int i = 0; i < placed.num_nodes(); ++i) placed.coordinates[2 * i + 1] += run.pile.frame.toe_elevation;
+    io::write_results_h5(dir / "results.h5", {table, count, history}, placed, coupled.pile().displacement(),
+                         coupled.pile().velocity(), stress, {{"ground_elevation_m", ground_elevation(c, run)}},
+                         {{"title", c.title}});
+}
 
 // What the checks read of the case: its parameters and the first material's constants.
 mpm::MpmCheckContext check_context(const io::MpmCase& c) {
@@ -222,8 +265,10 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     if (pile_vtk) pile_vtk->finish();
     io::write_csv(staged.path() / "history.csv", history);
     if constexpr (D == 2)
-        if (coupled)
+        if (coupled) {
             for (const auto& t : io::pile_traction_profiles(*coupled)) io::write_csv(staged.path() / (t.name + ".csv"), t);
+            write_drive_record(c, run, history, output, *coupled, staged.path());
+        }
     if constexpr (D == 2) {
         // A collapse's final deposit, one row per grid column, for comparison with profiles.
         if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "granular_runout") !=

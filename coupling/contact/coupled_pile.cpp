@@ -135,6 +135,13 @@ void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, 
     soil.step(dt);
 }
 
+double CoupledPile::max_speed() const {
+    const auto& v = pile_.velocity();
+    double fastest = 0.0;
+    for (std::size_t k = 0; k + 1 < v.size(); k += 2) fastest = std::max(fastest, std::hypot(v[k], v[k + 1]));
+    return fastest;
+}
+
 std::array<double, 2> CoupledPile::momentum() const {
     std::array<double, 2> p{};
     const auto& v = pile_.velocity();

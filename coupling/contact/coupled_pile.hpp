@@ -72,7 +72,14 @@ public:
     void before_step(mpm::MpmModel<2>& m, int stage, bool quasi_static, double dt, double time_in_stage) override {
         advance(m, dt, stage, quasi_static ? 1e300 : time_in_stage);
     }
-    void come_to_rest() override { pile_.stop(); }
+    // At rest, the last blow over (its ENTHRU and hammer gone: a pause records none).
+    void come_to_rest() override {
+        pile_.stop();
+        enthru_ = 0.0, enthru_stage_ = -1;
+        chain_.reset();
+    }
+    double max_speed() const override;
+    double toe_elevation() const override { return frame_.toe_elevation + pile_.toe_displacement(); }
     void set_gravity_factor(double factor) override { gravity_factor_ = factor; }
     std::vector<std::pair<std::string, std::vector<double>>> state() const override;
     void restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) override;

@@ -4,10 +4,61 @@
 
 namespace pilempm::coupling {
 
+namespace {
+
+// The toe's annulus in the soil's frame: its elevation and radial extent (the surface's
+// nodes within a tenth of a cell of the lowest; a cone's apex alone makes a point).
+struct ToeExtent {
+    double elevation = 0.0, inner = 0.0, outer = 0.0;
+};
+
+ToeExtent toe_extent(const CoupledPile& pile, double cell) {
+    const auto& x = pile.surface().x;
+    ToeExtent t{1e300, 1e300, 0.0};
+    if (x.empty()) return {pile.frame().toe_elevation, 0.0, 0.0};
+    for (std::size_t k = 1; k < x.size(); k += 2) t.elevation = std::min(t.elevation, x[k]);
+    for (std::size_t k = 0; k + 1 < x.size(); k += 2)
+        if (x[k + 1] < t.elevation + 0.1 * cell) t.inner = std::min(t.inner, x[k]), t.outer = std::max(t.outer, x[k]);
+    return t;
+}
+
+// The mean excess pore pressure of the points within a cell of the toe's annulus and a cell
+// and a half below it (0 when dry or none there).
+double toe_pore_pressure(const mpm::MpmModel<2>& m, const CoupledPile& pile) {
+    const auto& p = m.particles;
+    if (p.pore_pressure.empty()) return 0.0;
+    const double h = std::min(m.grid.spacing[0], m.grid.spacing[1]);
+    const ToeExtent t = toe_extent(pile, h);
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r = p.x[2 * i], z = p.x[2 * i + 1];
+        if (r >= t.inner - h && r <= t.outer + h && z <= t.elevation && z >= t.elevation - 1.5 * h)
+            sum += p.pore_pressure[i], ++n;
+    }
+    return n ? sum / n : 0.0;
+}
+
+// An open pile's soil plug: from the toe to the highest point inside the wall (a quarter of
+// a cell clear of it); 0 for a closed pile.
+double plug_length(const mpm::MpmModel<2>& m, const CoupledPile& pile) {
+    const auto& p = m.particles;
+    const double h = std::min(m.grid.spacing[0], m.grid.spacing[1]);
+    const ToeExtent t = toe_extent(pile, h);
+    if (t.inner < 0.25 * h) return 0.0;
+    double top = t.elevation;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.x[2 * i] < t.inner - 0.25 * h) top = std::max(top, p.x[2 * i + 1]);
+    return top - t.elevation;
+}
+
+}  // namespace
+
 void PileRecorder::add_columns(std::vector<std::string>& columns) const {
     for (const char* c : {"pile_head_settlement_m", "pile_head_force_N", "outer_shaft_resistance_N",
                           "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
-                          "max_penetration_over_cell", "pile_toe_elevation_m", "pile_head_velocity_m_s", "enthru_J"})
+                          "max_penetration_over_cell", "pile_toe_elevation_m", "pile_head_velocity_m_s", "enthru_J",
+                          "pile_max_compression_Pa", "pile_max_tension_Pa", "toe_pore_pressure_Pa", "plug_length_m"})
         columns.push_back(c);
 }
 
@@ -30,6 +81,13 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     row.push_back(x.empty() ? pile_.frame().toe_elevation : toe);
     row.push_back(-pile_.pile().head_velocity());  // down positive: with the head force, F and Z v of a blow
     row.push_back(pile_.enthru());
+    pile_.pile().axial_stress(stress_);
+    double compression = 0.0, tension = 0.0;
+    for (double s : stress_) compression = std::max(compression, -s), tension = std::max(tension, s);
+    row.push_back(compression);
+    row.push_back(tension);
+    row.push_back(toe_pore_pressure(m, pile_));
+    row.push_back(plug_length(m, pile_));
 }
 
 }  // namespace pilempm::coupling

@@ -18,6 +18,10 @@ public:
     // time_in_stage: s since the stage began (0 throughout a quasi-static stage).
     virtual void before_step(mpm::MpmModel<D>& m, int stage, bool quasi_static, double dt, double time_in_stage) = 0;
     virtual void come_to_rest() = 0;
+    // Its fastest node's speed (m/s) and its toe's elevation (m, the soil's frame): when a
+    // blow has died out, and how far the body has gone.
+    virtual double max_speed() const = 0;
+    virtual double toe_elevation() const = 0;
     // The stage's gravity over the case's (n g in a centrifuge) for the body's own weight.
     virtual void set_gravity_factor(double factor) = 0;
     // Its state for a checkpoint, and back: named arrays of doubles.

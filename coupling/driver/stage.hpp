@@ -30,6 +30,23 @@ struct StageSpec {
     // Gravity in this stage over the case's: n for n g in a centrifuge (the soil's body
     // forces, its pore water's and the pile's weight).
     double gravity_factor = 1.0;
+    // A dynamic stage may end before its duration once the coupled body has come to rest
+    // (no node faster than rest_speed, m/s) after min_duration s; 0: runs its duration.
+    double rest_speed = 0.0;
+    double min_duration = 0.0;
+    // Impact driving: the blows and pauses of one drive share `drive` (>= 0; -1: none). After
+    // a blow the driver ends the drive (goes on after its last stage) when the body's toe is
+    // at end_toe_elevation or lower, or when refusal_blows blows in a row each set it less
+    // than refusal_set (m).
+    int drive = -1;
+    bool blow = false;
+    double end_toe_elevation = -1e300;
+    double refusal_set = 0.0;
+    int refusal_blows = 0;
+    // A pause: a consolidation stage whose duration is what is left of `blow_interval` (s)
+    // since the last blow began (0: its own duration).
+    double blow_interval = 0.0;
+    bool snapshot_at_end = true;
 };
 
 // The time shape of a pulse: constant over its duration, p sin(pi t / T), whose smooth

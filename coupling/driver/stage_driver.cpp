@@ -101,11 +101,13 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
     m_.apic = false;
     StageReport report;
     long n = state_.stage_steps;
+    bool last_recorded = false;
     for (; n < st.max_steps; ++n) {
         apply_loads(true, 0.0);
         step(step_size(), true);
         state_.stage_steps = n + 1;
-        if (n % settings_.quasi_static_record_every == 0) record();
+        last_recorded = n % settings_.quasi_static_record_every == 0;
+        if (last_recorded) record();
         if (n >= 100 && solver_.unbalanced_force_ratio() < st.tolerance) break;
         if (periodic_checkpoint_and_stop(stop)) {
             report.steps = n;
@@ -122,6 +124,7 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
     std::fill(m_.particles.C.begin(), m_.particles.C.end(), 0.0);
     if (body_) body_->come_to_rest();
     solver_.set_time(state_.stage_start_time, solver_.steps());
+    if (!last_recorded) record();  // the stage's final state is in the history (a blow's set starts there)
     report.steps = n;
     report.unbalanced_ratio = solver_.unbalanced_force_ratio();
     report.in_equilibrium = report.unbalanced_ratio < st.tolerance;
@@ -153,6 +156,11 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
     const double t_end = state_.stage_start_time + st.duration;
     StageReport report;
     while (solver_.time() < t_end - 1e-15) {
+        // A blow has died out: the body at rest. Asked before the step, of the state a
+        // checkpoint holds, so a resumed run decides as the uninterrupted one did.
+        if (st.rest_speed > 0.0 && body_ && state_.stage_steps > 0 &&
+            solver_.time() - state_.stage_start_time >= st.min_duration && body_->max_speed() < st.rest_speed)
+            break;
         apply_loads(false, solver_.time() - state_.stage_start_time);
         step(std::min(step_size(), t_end - solver_.time()), false);
         ++state_.stage_steps;
@@ -168,6 +176,7 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
 // ending the stage on its duration. Held loads act (a pulse is a dynamic stage's).
 template <int D>
 bool StageDriver<D>::run_consolidation(const StageSpec& st, const StopRequest* stop) {
+    if (body_) body_->come_to_rest();  // the pause: the pile rests with the soil
     mpm::ConsolidationSolver<D> consolidation(m_, st.linear_solver, st.direct_below);
     const double r = st.step_growth;
     const double first = r == 1.0 ? st.duration / st.steps : st.duration * (r - 1.0) / (std::pow(r, st.steps) - 1.0);
@@ -188,6 +197,40 @@ bool StageDriver<D>::run_consolidation(const StageSpec& st, const StopRequest* s
     return true;
 }
 
+// A blow's start: when, and where the body's toe is (its set is measured from there).
+template <int D>
+void StageDriver<D>::begin_stage(const StageSpec& st) {
+    state_.stage_begun = true;
+    state_.stage_start_time = solver_.time();
+    state_.stage_steps = 0;
+    if (st.blow) {
+        state_.blow_start_time = solver_.time();
+        state_.blow_start_toe = body_ ? body_->toe_elevation() : 0.0;
+    }
+}
+
+// After a stage: the stage to go on from (its own index, or a drive's last once the drive is
+// over: the target depth reached, or refusal).
+template <int D>
+int StageDriver<D>::end_stage(const StageSpec& st) {
+    const int here = state_.stage;
+    if (!st.blow || !body_) return here;
+    const double toe = body_->toe_elevation();
+    const double set = state_.blow_start_toe - toe;
+    state_.low_set_blows = set < st.refusal_set ? state_.low_set_blows + 1 : 0;
+    std::string why;
+    if (toe <= st.end_toe_elevation)
+        why = "the toe reached its target elevation";
+    else if (st.refusal_blows > 0 && state_.low_set_blows >= st.refusal_blows)
+        why = "refusal: " + std::to_string(st.refusal_blows) + " blows in a row each set the pile less than " +
+              std::to_string(st.refusal_set * 1e3) + " mm";
+    if (why.empty()) return here;
+    int last = here;
+    while (last + 1 < static_cast<int>(stages_.size()) && stages_[last + 1].drive == st.drive) ++last;
+    if (last > here) observer_->drive_ended(st, why);
+    return last;
+}
+
 template <int D>
 typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
     if (!state_.initial_snapshot_written) {
@@ -195,21 +238,22 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
         state_.initial_snapshot_written = true;
     }
     for (; state_.stage < static_cast<int>(stages_.size()); ++state_.stage) {
-        const StageSpec& st = stages_[state_.stage];
-        if (!state_.stage_begun) {
-            state_.stage_begun = true;
-            state_.stage_start_time = solver_.time();
-            state_.stage_steps = 0;
-        }
+        StageSpec st = stages_[state_.stage];
+        if (!state_.stage_begun) begin_stage(st);
+        // A pause lasts what is left of the interval from the last blow's start.
+        if (st.blow_interval > 0.0) st.duration = st.blow_interval - (state_.stage_start_time - state_.blow_start_time);
         observer_->stage_begin(state_.stage, st);
         m_.local_damping = st.local_damping;
         for (int d = 0; d < D; ++d) m_.gravity[d] = st.gravity_factor * gravity_[d];
         if (body_) body_->set_gravity_factor(st.gravity_factor);
-        const bool finished = st.consolidation  ? run_consolidation(st, stop)
-                              : st.quasi_static ? run_quasi_static(st, stop)
-                                                : run_dynamic(st, stop);
+        const bool nothing_left = st.blow_interval > 0.0 && st.duration <= 1e-12;
+        const bool finished = nothing_left      ? true
+                              : st.consolidation ? run_consolidation(st, stop)
+                              : st.quasi_static  ? run_quasi_static(st, stop)
+                                                 : run_dynamic(st, stop);
         if (!finished) return Outcome::Stopped;
-        observer_->snapshot(solver_.time(), m_);
+        if (st.snapshot_at_end) observer_->snapshot(solver_.time(), m_);
+        state_.stage = end_stage(st);
         // The checkpoint at a stage's end names the next stage, not yet begun.
         state_.stage_begun = false;
         state_.stage_steps = 0;

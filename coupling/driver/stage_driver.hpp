@@ -6,6 +6,7 @@
 // from a checkpoint continues exactly as if it had never stopped. Output goes through a
 // StageObserver (VTK, checkpoint files, progress): the driver itself writes nothing.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/table.hpp"
@@ -26,6 +27,11 @@ struct DriverState {
     long stage_steps = 0;           // steps taken in the stage
     double next_snapshot = 0.0;     // s of simulated time
     bool initial_snapshot_written = false;
+    // Impact driving: when the last blow began (s), its body's toe then (m), and the blows in
+    // a row that set the pile less than the refusal set.
+    double blow_start_time = 0.0;
+    double blow_start_toe = 0.0;
+    int low_set_blows = 0;
 };
 
 struct DriverSettings {
@@ -53,6 +59,8 @@ public:
                                 const mpm::MpmSolver<D>& /*solver*/) {}
     // Also called when a stop ends the stage early.
     virtual void stage_end(int /*stage*/, const StageSpec& /*spec*/, const StageReport& /*report*/) {}
+    // A drive ended before its last blow (why: the target depth, refusal).
+    virtual void drive_ended(const StageSpec& /*blow*/, const std::string& /*why*/) {}
 };
 
 template <int D>
@@ -91,6 +99,8 @@ private:
     bool run_quasi_static(const StageSpec& st, const StopRequest* stop);
     bool run_dynamic(const StageSpec& st, const StopRequest* stop);
     bool run_consolidation(const StageSpec& st, const StopRequest* stop);
+    void begin_stage(const StageSpec& st);
+    int end_stage(const StageSpec& st);
     bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop);
     double step_size() const;
     void step(double dt, bool quasi_static);

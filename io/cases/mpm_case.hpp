@@ -80,6 +80,16 @@ struct MpmStageInput {
     int pile_line = 0;              // the stage's pile key, for errors found later
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
     double gravity_factor = 1.0;    // gravity over the case's in this stage (n g in a centrifuge)
+    // A blow or pause of a `type: driving` stage (coupling::StageSpec says what each means).
+    int drive = -1;                 // the driving stage's index among the case's drives (-1: none)
+    bool blow = false;
+    int blow_number = 0;            // 1-based within its drive
+    double rest_speed = 0.0;        // m/s
+    double min_duration = -1.0;     // s (< 0: the pulse and four of the pile's wave transits)
+    double end_toe_elevation = -1e300;
+    double refusal_set = 0.0;       // m
+    int refusal_blows = 0;
+    double blow_interval = 0.0;     // s (a pause)
 };
 
 // An FE pile in the soil (2D axisymmetric), coupled by penalty contact.

@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "ram_energy_into_pile", "granular_runout",
+                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "ram_energy_into_pile", "hammer_energy_every_blow", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
                                           "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
                                           "poroelastic_wave_history",
@@ -125,36 +125,99 @@ MpmRegionInput read_region(MapReader m, const MpmCase& c) {
     return r;
 }
 
+// A consolidation's steps and linear solver (a consolidation stage, a drive's pause).
+void read_consolidation_steps(MapReader& m, MpmStageInput& s) {
+    s.steps = m.integer_or("steps", 20, 1);
+    s.step_growth = m.number_or("step_growth", 1.2, {"a growth factor from 1 to 2 of one step over the last",
+                                                      [](double x) { return x >= 1.0 && x <= 2.0; }});
+    if (auto ls = m.optional_map("linear_solver")) {
+        const std::string method = ls->choice_or("method", "gmres", {"gmres", "bicgstab", "direct"});
+        s.linear_solver.method = method == "gmres"      ? core::KrylovMethod::gmres
+                                 : method == "bicgstab" ? core::KrylovMethod::bicgstab
+                                                        : core::KrylovMethod::direct;
+        const std::string pre = ls->choice_or("preconditioner", "ilu", {"none", "jacobi", "ilu", "ilut", "multigrid"});
+        s.linear_solver.preconditioner = pre == "none"     ? core::Preconditioner::none
+                                         : pre == "jacobi" ? core::Preconditioner::jacobi
+                                         : pre == "ilu"    ? core::Preconditioner::ilu
+                                         : pre == "ilut"   ? core::Preconditioner::ilut
+                                                           : core::Preconditioner::multigrid;
+        s.linear_solver.ilu_level = ls->integer_or("ilu_level", 1, 0);
+        s.linear_solver.relative_tolerance = ls->number_or("tolerance", 1e-10, in_open_range(0.0, 1.0, "a relative residual"));
+        s.linear_solver.multigrid_symmetric = false;
+        ls->finish();
+    } else {
+        s.linear_solver.ilu_level = 1;
+        s.linear_solver.relative_tolerance = 1e-10;
+    }
+}
+
+// `type: driving`: blow after blow of the case's hammer, each a dynamic stage that ends once
+// the pile is at rest, then (with `pause:`) the rest of the interval as a consolidation; up
+// to `blows` of them, fewer when the toe reaches `target_toe_elevation` or at refusal. Each
+// blow and pause becomes a stage of its own (name-blow-k, name-pause-k): a checkpoint and a
+// history stage number at every blow's boundary.
+void read_drive(MapReader m, const MpmCase& c, int drive, std::vector<MpmStageInput>& out) {
+    MpmStageInput blow;
+    blow.name = m.text_or("name", "driving");
+    blow.drive = drive;
+    blow.blow = true;
+    blow.pile_struck = true;
+    blow.pile_line = m.line_of("type");
+    const int blows = m.integer_or("blows", 1, 1);
+    blow.duration = m.number("blow_duration", positive("the longest a blow's dynamic phase runs, in s"));
+    blow.rest_speed = m.number_or("rest_speed", 0.005, positive("the pile's speed at rest in m/s (the blow then ends)"));
+    blow.min_duration = m.number_or("min_blow_duration", -1.0, non_negative("the shortest blow in s"));
+    blow.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
+                                                             [](double x) { return x >= 0.0 && x < 1.0; }});
+    blow.gravity_factor = m.number_or("gravity_factor", 1.0, positive("gravity over the case's (n for n g)"));
+    if (m.has("target_toe_elevation"))
+        blow.end_toe_elevation = m.number("target_toe_elevation", {"an elevation in m", [](double) { return true; }});
+    if (auto r = m.optional_map("refusal")) {
+        blow.refusal_set = r->number("set", positive("the set per blow in m below which a blow counts to refusal"));
+        blow.refusal_blows = r->integer_or("blows", 10, 1);
+        r->finish();
+    }
+    if (!c.pile.present) m.fail("type", "a pile: section for a driving stage", "driving without a pile");
+    if (!c.pile.has_hammer) m.fail("type", "a hammer: section (half_sine, force_table or ram_cushion) for the blows", "none");
+    MpmStageInput pause;
+    const bool paused = m.has("pause");
+    if (paused) {
+        bool coupled = false;
+        for (const auto& mat : c.materials) coupled = coupled || mat.drainage == "coupled";
+        MapReader pm = m.map("pause");
+        if (!coupled) pm.fail("steps", "soil with pore water (a material with drainage: coupled) to consolidate", "dry soil");
+        pause.consolidation = true;
+        pause.drive = drive;
+        pause.gravity_factor = blow.gravity_factor;
+        read_consolidation_steps(pm, pause);
+        pm.finish();
+        pause.blow_interval = m.number("interval", {"the time from one blow to the next in s, longer than blow_duration",
+                                                    [d = blow.duration](double x) { return x > d; }});
+        pause.duration = pause.blow_interval;
+    }
+    m.finish();
+    for (int k = 1; k <= blows; ++k) {
+        MpmStageInput b = blow;
+        b.name = blow.name + "-blow-" + std::to_string(k);
+        b.blow_number = k;
+        out.push_back(b);
+        if (!paused) continue;
+        MpmStageInput p = pause;
+        p.name = blow.name + "-pause-" + std::to_string(k);
+        p.blow_number = k;
+        out.push_back(p);
+    }
+}
+
 MpmStageInput read_stage(MapReader m) {
     MpmStageInput s;
     s.name = m.text_or("name", "stage");
-    const std::string type = m.choice("type", {"quasi_static", "dynamic", "consolidation"});
+    const std::string type = m.choice("type", {"quasi_static", "dynamic", "consolidation", "driving"});
     s.quasi_static = type == "quasi_static";
     s.consolidation = type == "consolidation";
     if (s.consolidation) {
         s.duration = m.number("duration", positive("duration in s"));
-        s.steps = m.integer_or("steps", 20, 1);
-        s.step_growth = m.number_or("step_growth", 1.2, {"a growth factor from 1 to 2 of one step over the last",
-                                                          [](double x) { return x >= 1.0 && x <= 2.0; }});
-        if (auto ls = m.optional_map("linear_solver")) {
-            const std::string method = ls->choice_or("method", "gmres", {"gmres", "bicgstab", "direct"});
-            s.linear_solver.method = method == "gmres"      ? core::KrylovMethod::gmres
-                                     : method == "bicgstab" ? core::KrylovMethod::bicgstab
-                                                            : core::KrylovMethod::direct;
-            const std::string pre = ls->choice_or("preconditioner", "ilu", {"none", "jacobi", "ilu", "ilut", "multigrid"});
-            s.linear_solver.preconditioner = pre == "none"     ? core::Preconditioner::none
-                                             : pre == "jacobi" ? core::Preconditioner::jacobi
-                                             : pre == "ilu"    ? core::Preconditioner::ilu
-                                             : pre == "ilut"   ? core::Preconditioner::ilut
-                                                               : core::Preconditioner::multigrid;
-            s.linear_solver.ilu_level = ls->integer_or("ilu_level", 1, 0);
-            s.linear_solver.relative_tolerance = ls->number_or("tolerance", 1e-10, in_open_range(0.0, 1.0, "a relative residual"));
-            s.linear_solver.multigrid_symmetric = false;
-            ls->finish();
-        } else {
-            s.linear_solver.ilu_level = 1;
-            s.linear_solver.relative_tolerance = 1e-10;
-        }
+        read_consolidation_steps(m, s);
     } else if (s.quasi_static) {
         s.max_steps = m.integer_or("max_steps", 100000, 1);
         s.tolerance = m.number_or("tolerance", 1e-4, positive("unbalanced force ratio"));
@@ -284,7 +347,13 @@ MpmCase read_mpm_case(const std::string& file) {
         c.pile.has_hammer = true;
     }
     // Stages first: loads name the stages they act in.
-    for (auto m : root.maps("stages")) c.stages.push_back(read_stage(std::move(m)));
+    int drives = 0;
+    for (auto m : root.maps("stages")) {
+        if (m.has("type") && m.raw("type").IsScalar() && m.raw("type").as<std::string>() == "driving")
+            read_drive(std::move(m), c, drives++, c.stages);
+        else
+            c.stages.push_back(read_stage(std::move(m)));
+    }
     for (const auto& st : c.stages)
         if (st.pile_struck && !c.pile.has_hammer)
             throw CaseError(file, st.pile_line, "stages." + st.name + ".pile.blow",
@@ -378,6 +447,8 @@ MpmCase read_mpm_case(const std::string& file) {
         if (v->has("at_time")) c.verification["at_time"] = v->number("at_time", positive("a time after impact in s"));
         if (v->has("blow_stage"))
             c.verification["blow_stage"] = v->integer_or("blow_stage", 1, 1);
+        // hammer_energy_every_blow: the blows a drive must have struck.
+        if (v->has("blows")) c.verification["blows"] = v->integer_or("blows", 1, 1);
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
         if (v->has("pulse_duration"))

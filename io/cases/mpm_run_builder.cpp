@@ -24,6 +24,16 @@ std::string metres(double x) {
     return out.str();
 }
 
+// The shortest a blow runs before the pile counts as at rest: the given one, else the
+// hammer's pulse (a ram-cushion's: none, its ram rides the head) and four of the wave's
+// transits of the pile, so a blow does not end between two of its reflections.
+double blow_min_duration(const MpmCase& c, const MpmStageInput& st) {
+    if (st.min_duration >= 0.0) return st.min_duration;
+    const fem::HammerSpec& h = c.pile.hammer.hammer;
+    const double pulse = h.kind == fem::HammerKind::PrescribedForce ? h.force.end_time() : 0.0;
+    return pulse + 4.0 * c.pile.pile.length() / c.pile.pile.steel.wave_speed();
+}
+
 template <int D>
 bool in_region(const MpmRegionInput& r, const double* x) {
     if (r.kind == MpmRegionInput::Cylinder) {
@@ -282,6 +292,15 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         s.step_growth = st.step_growth;
         s.linear_solver = st.linear_solver;
         s.direct_below = st.direct_below;
+        s.drive = st.drive;
+        s.blow = st.blow;
+        s.rest_speed = st.rest_speed;
+        s.min_duration = st.blow ? blow_min_duration(c, st) : 0.0;
+        s.end_toe_elevation = st.end_toe_elevation;
+        s.refusal_set = st.refusal_set;
+        s.refusal_blows = st.refusal_blows;
+        s.blow_interval = st.blow_interval;
+        s.snapshot_at_end = !(st.drive >= 0 && st.consolidation);  // a drive's snapshots: after each blow
         run.stages.push_back(s);
     }
     run.settings.snapshot_interval = c.snapshot_interval;

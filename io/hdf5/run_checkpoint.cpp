@@ -20,6 +20,9 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
         {"stage_steps", static_cast<double>(s.stage_steps)},
         {"next_snapshot", s.next_snapshot},
         {"initial_snapshot_written", s.initial_snapshot_written ? 1.0 : 0.0},
+        {"blow_start_time", s.blow_start_time},
+        {"blow_start_toe", s.blow_start_toe},
+        {"low_set_blows", static_cast<double>(s.low_set_blows)},
         {"absorbed_energy", run.solver.absorbed_energy},
         {"external_work", run.solver.external_work},
     };
@@ -49,6 +52,9 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     run.driver.stage_steps = static_cast<long>(scalar("stage_steps"));
     run.driver.next_snapshot = scalar("next_snapshot");
     run.driver.initial_snapshot_written = scalar("initial_snapshot_written") != 0.0;
+    run.driver.blow_start_time = scalar("blow_start_time");
+    run.driver.blow_start_toe = scalar("blow_start_toe");
+    run.driver.low_set_blows = static_cast<int>(scalar("low_set_blows"));
     run.solver.absorbed_energy = scalar("absorbed_energy");
     run.solver.external_work = scalar("external_work");
     for (const auto& [name, values] : info.extras.arrays) {

@@ -1,5 +1,6 @@
 #include "io/writers/mpm_run_output.hpp"
 
+#include <chrono>
 #include <cstdio>
 
 #include "io/hdf5/run_checkpoint.hpp"
@@ -40,6 +41,7 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
 template <int D>
 void MpmRunOutput<D>::stage_begin(int stage, const coupling::StageSpec& spec) {
     progress_.stage_begin(stage, spec);
+    stage_began_ = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 template <int D>
@@ -51,10 +53,20 @@ void MpmRunOutput<D>::stage_progress(const coupling::StageSpec& spec, const coup
 template <int D>
 void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, const coupling::StageReport& report) {
     progress_.stage_end(stage, spec, report);
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    if (!report.stopped) walls_.push_back({stage, now - stage_began_});
+    if (!quiet_ && spec.blow && !report.stopped && body_)
+        std::printf("%s: toe at %.4f m, %ld steps, %.1f s\n", spec.name.c_str(), body_->toe_elevation(), report.steps,
+                    now - stage_began_);
     if (!quiet_ && spec.quasi_static && !report.stopped)
         std::printf("stage '%s': %ld steps, unbalanced force ratio %.3g (tolerance %.3g)%s\n", spec.name.c_str(),
                     report.steps, report.unbalanced_ratio, spec.tolerance,
                     report.in_equilibrium ? "" : "  NOT IN EQUILIBRIUM");
+}
+
+template <int D>
+void MpmRunOutput<D>::drive_ended(const coupling::StageSpec& blow, const std::string& why) {
+    if (!quiet_) std::printf("drive ended after %s: %s\n", blow.name.c_str(), why.c_str());
 }
 
 template class MpmRunOutput<2>;

@@ -43,6 +43,15 @@ public:
     void stage_progress(const coupling::StageSpec& spec, const coupling::DriverState& state,
                         const mpm::MpmSolver<D>& solver) override;
     void stage_end(int stage, const coupling::StageSpec& spec, const coupling::StageReport& report) override;
+    void drive_ended(const coupling::StageSpec& blow, const std::string& why) override;
+
+    // Each stage finished in this invocation: its index and wall time (s; a stage resumed
+    // counts from the resume).
+    struct StageWallTime {
+        int stage = 0;
+        double wall = 0.0;
+    };
+    const std::vector<StageWallTime>& stage_wall_times() const { return walls_; }
 
 private:
     StagedDirectory& staged_;
@@ -52,6 +61,8 @@ private:
     StageProgress<D> progress_;
     const coupling::CoupledBody<D>* body_ = nullptr;
     std::function<void(double)> also_;
+    std::vector<StageWallTime> walls_;
+    double stage_began_ = 0.0;  // s on the steady clock
 };
 
 extern template class MpmRunOutput<2>;

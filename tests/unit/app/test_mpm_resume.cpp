@@ -45,7 +45,8 @@ std::string summary_without_wall_time(const fs::path& file) {
 
 void expect_same_outputs(const fs::path& whole, const fs::path& split) {
     ASSERT_TRUE(fs::exists(whole / "history.csv"));
-    for (const char* name : {"history.csv", "verification.json"}) {  // the latter where the case checks
+    // verification.json where the case checks, blows.csv and blow_count.csv where it drives.
+    for (const char* name : {"history.csv", "verification.json", "blows.csv", "blow_count.csv"}) {
         EXPECT_EQ(fs::exists(whole / name), fs::exists(split / name)) << name;
         if (fs::exists(whole / name)) {
             EXPECT_EQ(read_file(whole / name), read_file(split / name)) << name << " differs";
@@ -196,6 +197,25 @@ TEST(MpmResume, ABlowOnTheCoupledPileStoppedInItsPulseResumedWritesWhatAnUninter
 
 TEST(MpmResume, ARamOnTheCoupledPileStoppedAsItRidesTheHeadResumedWritesWhatAnUninterruptedOneWrites) {
     check_blow_resume("coupled-ram", "coupled-ram-blow-energy.yaml", SIGINT);
+}
+
+// A drive of two blows with a consolidation pause between them (the driving verification
+// with 10 ms blows, some 1 490 steps each), stopped in the second blow: the driver's
+// blow bookkeeping (where the blow began, the refusal count) comes back with the rest.
+TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneWrites) {
+    const fs::path dir = fresh_dir("drive");
+    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
+    for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
+                            {"blow_duration: 0.1 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}}) {
+        const auto at = yaml.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        yaml.replace(at, from.size(), to);
+    }
+    const fs::path file = dir / "drive.yaml";
+    std::ofstream(file) << yaml;
+    check_resume(dir, file.string(), SIGTERM, 1600);
+    EXPECT_TRUE(fs::exists(dir / "whole" / "blows.csv"));
+    fs::remove_all(dir);
 }
 
 TEST(MpmResume, SaturatedRunStoppedInItsConsolidationPauseResumedWritesWhatAnUninterruptedOneWrites) {

@@ -252,3 +252,78 @@ void check_resume(long stop_after) {
 
 TEST(StageDriver, StoppedInAQuasiStaticStageAndResumedEqualsUninterrupted) { check_resume(150); }
 TEST(StageDriver, StoppedInADynamicStageAndResumedEqualsUninterrupted) { check_resume(420); }
+
+namespace {
+
+// A body that sinks `set` metres on the first step of every blow and is otherwise at rest.
+class SinkingBody final : public CoupledBody<2> {
+public:
+    SinkingBody(const std::vector<StageSpec>& stages, double set) : stages_(stages), set_(set) {}
+    double stable_time_step(const mpm::MpmModel<2>&, double soil_dt) const override { return soil_dt; }
+    void before_step(mpm::MpmModel<2>&, int stage, bool, double, double time_in_stage) override {
+        if (stages_[stage].blow && time_in_stage == 0.0) toe_ -= set_;
+    }
+    void come_to_rest() override {}
+    void set_gravity_factor(double) override {}
+    double max_speed() const override { return 0.0; }
+    double toe_elevation() const override { return toe_; }
+    std::vector<std::pair<std::string, std::vector<double>>> state() const override { return {}; }
+    void restore(const std::vector<std::pair<std::string, std::vector<double>>>&) override {}
+
+private:
+    std::vector<StageSpec> stages_;
+    double set_;
+    double toe_ = 1.0;
+};
+
+// Five blows of a drive (each ends once the body is at rest after 2 ms, not at its 10 ms),
+// then a stage after it; the stages the history saw.
+std::vector<double> drive_stages_run(double set, double target, double refusal_set, int refusal_blows,
+                                     double& first_blow_end) {
+    auto m = block();
+    std::vector<StageSpec> stages;
+    for (int k = 0; k < 5; ++k) {
+        StageSpec b = dynamic("blow", 0.01);
+        b.blow = true;
+        b.drive = 0;
+        b.rest_speed = 1e-3;
+        b.min_duration = 0.002;
+        b.end_toe_elevation = target;
+        b.refusal_set = refusal_set;
+        b.refusal_blows = refusal_blows;
+        stages.push_back(b);
+    }
+    stages.push_back(dynamic("after", 0.001));
+    SinkingBody body(stages, set);
+    StageDriver<2> d(m, stages, {}, {});
+    d.couple(&body);
+    d.run();
+    const auto& stage = d.history().data[2];
+    const auto& time = d.history().data[0];
+    std::vector<double> seen;
+    first_blow_end = 0.0;
+    for (std::size_t i = 0; i < stage.size(); ++i) {
+        if (seen.empty() || seen.back() != stage[i]) seen.push_back(stage[i]);
+        if (stage[i] == 1.0) first_blow_end = time[i];
+    }
+    return seen;
+}
+
+}  // namespace
+
+// A drive ends when the toe reaches its target: three blows of 10 mm from 1.0 m reach
+// 0.975 m, and the run goes on with the stage after the drive; each blow ends once the body
+// is at rest after its shortest duration (2 ms and a step), not at its 10 ms.
+TEST(StageDriver, ADriveEndsAtItsTargetDepth) {
+    double end = 0.0;
+    EXPECT_EQ(drive_stages_run(0.01, 0.975, 0.0, 0, end), (std::vector<double>{1, 2, 3, 6}));
+    EXPECT_GE(end, 0.002);
+    EXPECT_LT(end, 0.003);
+}
+
+// Refusal: two blows in a row each setting the pile less than 2 mm end the drive.
+TEST(StageDriver, ADriveEndsAtRefusal) {
+    double end = 0.0;
+    EXPECT_EQ(drive_stages_run(0.001, -1e300, 0.002, 2, end), (std::vector<double>{1, 2, 6}));
+    EXPECT_EQ(drive_stages_run(0.003, -1e300, 0.002, 2, end), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+}

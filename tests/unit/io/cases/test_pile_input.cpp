@@ -220,3 +220,41 @@ TEST(PileInput, ABlowNeedsAHammerAndADynamicStage) {
     EXPECT_NE(settled.find("blow"), std::string::npos) << settled;
     EXPECT_NE(settled.find("dynamic"), std::string::npos) << settled;
 }
+
+// A driving stage becomes a blow and a pause per blow, named and numbered, each blow struck
+// by the case's hammer and ending once the pile is at rest (after the pulse and four wave
+// transits by default), each pause the rest of the interval as a consolidation; without
+// water there is nothing to consolidate, without a hammer nothing to strike with.
+TEST(PileInput, ADrivingStageIsABlowAndAPausePerBlow) {
+    const std::string text = case_text::shipped("cases/verification/coupled-driving-energy.yaml");
+    const fs::path file = write(text, "drive");
+    const auto c = pio::read_mpm_case(file.string());
+    const auto run = pio::build_mpm_run<2>(c);
+    fs::remove(file);
+    ASSERT_EQ(c.stages.size(), 6u);
+    EXPECT_EQ(c.stages[0].name, "drive-blow-1");
+    EXPECT_EQ(c.stages[5].name, "drive-pause-3");
+    EXPECT_EQ(c.stages[4].blow_number, 3);
+    for (int k = 0; k < 6; ++k) {
+        const auto& st = run.stages[k];
+        EXPECT_EQ(st.drive, 0);
+        EXPECT_EQ(st.blow, k % 2 == 0);
+        EXPECT_EQ(st.consolidation, k % 2 == 1);
+        EXPECT_EQ(run.pile.heads[k].struck, k % 2 == 0);
+    }
+    // The half-sine's 1 ms and four transits of the 4 m pile at sqrt(E / rho) = 5172 m/s.
+    EXPECT_NEAR(run.stages[0].min_duration, 0.001 + 16.0 / std::sqrt(210.0e9 / 7850.0), 1e-12);
+    EXPECT_DOUBLE_EQ(run.stages[0].rest_speed, 0.005);
+    EXPECT_DOUBLE_EQ(run.stages[1].blow_interval, 0.5);
+    EXPECT_EQ(run.stages[1].steps, 8);
+    EXPECT_FALSE(run.stages[1].snapshot_at_end);
+    const auto dry = error_of(replaced(replaced(text, "water: {level: 2.5}\n", ""),
+                                       ",\n     drainage: coupled, porosity: 0.4, hydraulic_conductivity: 1.0e-4}", "}"),
+                              "drive_dry");
+    EXPECT_NE(dry.find("stages[0].pause"), std::string::npos) << dry;  // the drive's pause: key
+    EXPECT_NE(dry.find("coupled"), std::string::npos) << dry;
+    const auto hammerless = error_of(replaced(text, "hammer:\n  type: half_sine", "unused:\n  type: half_sine"), "drive_hammerless");
+    EXPECT_NE(hammerless.find("hammer"), std::string::npos) << hammerless;
+    const auto short_interval = error_of(replaced(text, "interval: 0.5 ", "interval: 0.05 "), "drive_interval");
+    EXPECT_NE(short_interval.find("interval"), std::string::npos) << short_interval;
+}

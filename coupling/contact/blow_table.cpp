@@ -1,0 +1,90 @@
+#include "coupling/contact/blow_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace pilempm::coupling {
+
+namespace {
+
+const std::vector<double>& col(const Table& t, const std::string& name) {
+    for (std::size_t k = 0; k < t.columns.size(); ++k)
+        if (t.columns[k] == name) return t.data[k];
+    throw std::runtime_error("the " + t.name + " table has no column " + name);
+}
+
+}  // namespace
+
+Table blow_table(const Table& history, const std::vector<BlowStage>& blows, double ground_elevation) {
+    Table out("blows", {"blow", "stage", "start_time_s", "duration_s", "toe_depth_before_m", "toe_depth_m", "set_m",
+                        "max_head_displacement_m", "max_head_force_N", "max_head_velocity_m_s",
+                        "enthru_J", "max_compression_Pa", "max_tension_Pa", "max_shaft_resistance_N",
+                        "max_base_resistance_N", "max_toe_pore_pressure_Pa", "min_toe_pore_pressure_Pa",
+                        "plug_length_m"});
+    const auto& stage = col(history, "stage");
+    const auto& time = col(history, "time_s");
+    const auto& toe = col(history, "pile_toe_elevation_m");
+    const auto& head = col(history, "pile_head_settlement_m");
+    const auto& force = col(history, "pile_head_force_N");
+    const auto& velocity = col(history, "pile_head_velocity_m_s");
+    const auto& enthru = col(history, "enthru_J");
+    const auto& compression = col(history, "pile_max_compression_Pa");
+    const auto& tension = col(history, "pile_max_tension_Pa");
+    const auto& outer = col(history, "outer_shaft_resistance_N");
+    const auto& inner = col(history, "inner_shaft_resistance_N");
+    const auto& base = col(history, "base_resistance_N");
+    const auto& pore = col(history, "toe_pore_pressure_Pa");
+    const auto& plug = col(history, "plug_length_m");
+    for (const BlowStage& b : blows) {
+        std::size_t first = 0;
+        while (first < stage.size() && stage[first] != b.stage) ++first;
+        if (first == stage.size()) continue;  // not run (the drive ended before it)
+        std::size_t last = first;
+        while (last + 1 < stage.size() && stage[last + 1] == b.stage) ++last;
+        const std::size_t before = first > 0 ? first - 1 : first;
+        double dmx = 0.0, fmx = 0.0, vmx = 0.0, emx = 0.0, cmx = 0.0, tmx = 0.0, smx = 0.0, bmx = 0.0;
+        double pmax = -1e300, pmin = 1e300;
+        for (std::size_t i = first; i <= last; ++i) {
+            dmx = std::max(dmx, head[i] - head[before]);
+            fmx = std::max(fmx, force[i]);
+            vmx = std::max(vmx, velocity[i]);
+            emx = std::max(emx, enthru[i]);
+            cmx = std::max(cmx, compression[i]);
+            tmx = std::max(tmx, tension[i]);
+            smx = std::max(smx, outer[i] + inner[i]);
+            bmx = std::max(bmx, base[i]);
+            pmax = std::max(pmax, pore[i]);
+            pmin = std::min(pmin, pore[i]);
+        }
+        out.add_row({static_cast<double>(b.blow), static_cast<double>(b.stage), time[before],
+                     time[last] - time[before], ground_elevation - toe[before], ground_elevation - toe[last],
+                     toe[before] - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last]});
+    }
+    return out;
+}
+
+Table blow_count_table(const Table& blows, double interval) {
+    if (!(interval > 0.0)) throw std::invalid_argument("blow_count_table: the depth interval must be positive");
+    Table out("blow_count", {"depth_top_m", "depth_bottom_m", "blows", "blows_per_m", "cumulative_blows"});
+    const auto& before = col(blows, "toe_depth_before_m");
+    const auto& after = col(blows, "toe_depth_m");
+    if (after.empty()) return out;
+    const double start = before.front();
+    const double deepest = *std::max_element(after.begin(), after.end());
+    const int intervals = std::max(1, static_cast<int>(std::ceil((deepest - start) / interval - 1e-9)));
+    std::vector<double> count(intervals, 0.0);
+    for (double d : after) {
+        const int k = std::clamp(static_cast<int>(std::floor((d - start) / interval)), 0, intervals - 1);
+        count[k] += 1.0;
+    }
+    double cumulative = 0.0;
+    for (int k = 0; k < intervals; ++k) {
+        cumulative += count[k];
+        out.add_row({start + k * interval, start + (k + 1) * interval, count[k], count[k] / interval, cumulative});
+    }
+    return out;
+}
+
+}  // namespace pilempm::coupling

@@ -1,0 +1,78 @@
+// The drive's blow-by-blow record read off a history: a blow's state before it is the
+// history's row before its first, its set the toe's travel, its peaks over its own rows; the
+// blow count per interval counts each blow where it ends, cumulative at each interval's
+// bottom. A synthetic history whose answers are known by construction.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "coupling/contact/blow_table.hpp"
+
+namespace pc = pilempm::coupling;
+
+namespace {
+
+// Stage 1 settles (toe at 5.0), blows in stages 2 and 4 (each sinks the toe 0.1 m over two
+// rows), a pause in stage 3; columns as the pile recorder names them.
+pilempm::Table drive_history() {
+    pilempm::Table h("history", {"time_s", "stage", "pile_toe_elevation_m", "pile_head_settlement_m", "pile_head_force_N",
+                                 "pile_head_velocity_m_s", "enthru_J", "pile_max_compression_Pa", "pile_max_tension_Pa",
+                                 "outer_shaft_resistance_N", "inner_shaft_resistance_N", "base_resistance_N",
+                                 "toe_pore_pressure_Pa", "plug_length_m"});
+    h.add_row({0.0, 1, 5.0, 0.0, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.0});
+    h.add_row({0.01, 2, 4.95, 0.06, 3e6, 2.0, 900, 150e6, 0, 40, 20, 300, 5e4, 1.0});
+    h.add_row({0.02, 2, 4.90, 0.05, 1e6, -0.5, 1000, 80e6, 30e6, 30, 10, 100, -2e4, 1.05});
+    h.add_row({1.00, 3, 4.90, 0.05, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.05});
+    h.add_row({1.01, 4, 4.85, 0.11, 2e6, 1.0, 700, 120e6, 0, 50, 20, 200, 3e4, 1.05});
+    h.add_row({1.02, 4, 4.80, 0.10, 0, 0, 800, 60e6, 10e6, 20, 10, 50, 1e4, 1.1});
+    return h;
+}
+
+double at(const pilempm::Table& t, const std::string& name, std::size_t row) {
+    for (std::size_t k = 0; k < t.columns.size(); ++k)
+        if (t.columns[k] == name) return t.data[k][row];
+    ADD_FAILURE() << "no column " << name;
+    return 0.0;
+}
+
+}  // namespace
+
+TEST(BlowTable, EachBlowsSetAndPeaksComeFromItsOwnRows) {
+    const auto blows = pc::blow_table(drive_history(), {{2, 1}, {4, 2}, {6, 3}}, 6.0);
+    ASSERT_EQ(blows.rows(), 2u);  // blow 3 never ran
+    EXPECT_DOUBLE_EQ(at(blows, "start_time_s", 1), 1.0);
+    EXPECT_NEAR(at(blows, "duration_s", 1), 0.02, 1e-15);
+    EXPECT_DOUBLE_EQ(at(blows, "toe_depth_before_m", 0), 1.0);
+    EXPECT_NEAR(at(blows, "set_m", 0), 0.1, 1e-12);
+    EXPECT_NEAR(at(blows, "toe_depth_m", 1), 1.2, 1e-12);
+    EXPECT_NEAR(at(blows, "max_head_displacement_m", 1), 0.06, 1e-12);  // 0.11 against 0.05 before it
+    EXPECT_DOUBLE_EQ(at(blows, "max_head_force_N", 0), 3e6);
+    EXPECT_DOUBLE_EQ(at(blows, "enthru_J", 0), 1000.0);
+    EXPECT_DOUBLE_EQ(at(blows, "max_compression_Pa", 0), 150e6);
+    EXPECT_DOUBLE_EQ(at(blows, "max_tension_Pa", 1), 10e6);
+    EXPECT_DOUBLE_EQ(at(blows, "max_shaft_resistance_N", 1), 70.0);
+    EXPECT_DOUBLE_EQ(at(blows, "max_base_resistance_N", 0), 300.0);
+    EXPECT_DOUBLE_EQ(at(blows, "min_toe_pore_pressure_Pa", 0), -2e4);
+    EXPECT_DOUBLE_EQ(at(blows, "plug_length_m", 1), 1.1);
+}
+
+TEST(BlowTable, TheBlowCountCountsEachBlowWhereItEnds) {
+    pilempm::Table blows("blows", {"toe_depth_before_m", "toe_depth_m"});
+    // From 1.0 m: four blows of 0.1 m, then six of 0.04 m: 1.1 1.2 | 1.3 1.4 1.44 1.48 | 1.52 ... 1.64.
+    double d = 1.0;
+    for (int k = 0; k < 10; ++k) {
+        const double set = k < 4 ? 0.1 : 0.04;
+        blows.add_row({d, d + set});
+        d += set;
+    }
+    const auto count = pc::blow_count_table(blows, 0.25);
+    ASSERT_EQ(count.rows(), 3u);  // 1.0-1.25, 1.25-1.5, 1.5-1.75
+    EXPECT_DOUBLE_EQ(at(count, "blows", 0), 2.0);  // 1.1, 1.2
+    EXPECT_DOUBLE_EQ(at(count, "blows", 1), 4.0);
+    EXPECT_DOUBLE_EQ(at(count, "blows", 2), 4.0);
+    EXPECT_DOUBLE_EQ(at(count, "depth_bottom_m", 2), 1.75);
+    EXPECT_DOUBLE_EQ(at(count, "blows_per_m", 0), 8.0);
+    EXPECT_DOUBLE_EQ(at(count, "cumulative_blows", 2), 10.0);
+    EXPECT_THROW(pc::blow_count_table(blows, 0.0), std::invalid_argument);
+}
