@@ -89,11 +89,19 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     if (chain_) pile_dt = std::min(pile_dt, 0.95 * chain_->stable_time_step(pile_.head_mass(), pile_.operators().max_frequency));
     substeps_ = std::max(1, static_cast<int>(std::ceil(dt / pile_dt)));
     const double sub = dt / substeps_;
-    const auto& f = contact_.nodal_force();
     const auto& mass = pile_.operators().lumped_mass;
     const int nodes = pile_.mesh().num_nodes();
     double jack_impulse = 0.0;  // up positive
+    // The contact followed through the substeps (penalty_contact.hpp: substep_force).
+    const std::vector<double> u0 = pile_.displacement();
+    std::vector<double>& f = substep_force_;
+    std::vector<double>& shift = substep_shift_;
     for (int s = 0; s < substeps_; ++s) {
+        const auto& u = pile_.displacement();
+        shift.resize(u.size());
+        for (std::size_t k = 0; k < u.size(); ++k) shift[k] = u[k] - u0[k];
+        f.assign(u.size(), 0.0);
+        contact_.substep_force(m.particles, shift, s * sub, sub, f);
         pile_.compute_internal_force();
         pile_.clear_external_force();
         for (int i = 0; i < nodes; ++i) {
@@ -127,6 +135,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         if (chain_) chain_->advance_displacement(sub);
         enthru_ -= f_blow * (pile_.head_displacement() - head_before);  // the force down, the head down
     }
+    contact_.finish_substeps(m.particles, dt);
     head_force_ = head.struck ? blow_impulse / dt : head.loaded ? target : -jack_impulse / dt;
 }
 

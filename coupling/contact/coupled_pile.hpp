@@ -115,6 +115,7 @@ private:
     double enthru_ = 0.0;     // J, this blow's so far
     int enthru_stage_ = -1;   // the stage it counts
     std::optional<fem::HammerChain> chain_;  // a ram-cushion blow's hammer, from its impact on
+    std::vector<double> substep_force_, substep_shift_;  // per pile DOF, reused
 };
 
 }  // namespace pilempm::coupling

@@ -4,7 +4,8 @@
 // base (the toe's annulus), the points in contact, those let go inside the pile and the
 // deepest penetration, the toe's elevation and the head's velocity (down positive), the
 // hammer's work (ENTHRU), the steel's largest axial compression and tension, the mean excess
-// pore pressure just below the toe and the length of the soil plug (open piles).
+// pore pressure just below the toe, the length of the soil plug (open piles) and the
+// pile's own energy (strain and kinetic).
 #include "coupling/contact/coupled_pile.hpp"
 #include "coupling/driver/recorders.hpp"
 

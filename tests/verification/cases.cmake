@@ -56,6 +56,7 @@ pilempm_case_test(verify_terzaghi_under_pile cases/verification/terzaghi-under-p
 pilempm_case_test(verify_coupled_blow_energy cases/verification/coupled-blow-energy.yaml verification)
 pilempm_case_test(verify_coupled_ram_blow_energy cases/verification/coupled-ram-blow-energy.yaml verification)
 pilempm_case_test(verify_coupled_driving_energy cases/verification/coupled-driving-energy.yaml verification)
+pilempm_case_test(verify_coupled_ringing_pile cases/verification/coupled-ringing-pile.yaml verification)
 # Validation 3 (issue 13): seed 002's shaft capacity, jacked over wished in place, against
 # the paper's trends, the six models of Table 2 at the paper's D/4. Not met yet (the soil
 # leaves the shaft above the toe, README), so not in CI: label long.
