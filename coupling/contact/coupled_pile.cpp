@@ -71,10 +71,15 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     // The target over the step: its mid-time's.
     const double target = head.driven || head.loaded ? head_target(head_, stage, time_in_stage + 0.5 * dt) : 0.0;
     // A damped stage damps the pile too: stiffness-proportional, 5 % of critical in its
-    // first axial mode (fixed-free, omega_1 = pi c / 2L), more in the higher ones.
+    // first axial mode (fixed-free, omega_1 = pi c / 2L), more in the higher ones. An
+    // undamped stage (a blow) damps only what the soil's step cannot carry: 1 % of critical
+    // at omega = 1 / dt (the first mode some 1e-5, a 1 ms pulse's band 1e-4). The contact's
+    // force, held over the soil's step while the pile subcycles, otherwise feeds the pile's
+    // modes near pi / dt (the resonance of multiple-time-step methods): a struck pile left
+    // ringing in the soil grew without bound (coupled-ringing-pile.yaml; README).
     const double length = pile_.mesh().z(pile_.mesh().head_nodes.front());
     const double omega1 = std::numbers::pi * pile_.steel().wave_speed() / (2.0 * length);
-    pile_.set_stiffness_damping(m.local_damping > 0.0 ? 2.0 * 0.05 / omega1 : 0.0);
+    pile_.set_stiffness_damping(m.local_damping > 0.0 ? 2.0 * 0.05 / omega1 : 2.0 * kStepModeDamping * dt);
     double blow_impulse = 0.0;  // down positive
     if (head.struck && enthru_stage_ != stage) {
         // A new blow: the ram meets the head where it now is.
@@ -89,19 +94,11 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     if (chain_) pile_dt = std::min(pile_dt, 0.95 * chain_->stable_time_step(pile_.head_mass(), pile_.operators().max_frequency));
     substeps_ = std::max(1, static_cast<int>(std::ceil(dt / pile_dt)));
     const double sub = dt / substeps_;
+    const auto& f = contact_.nodal_force();
     const auto& mass = pile_.operators().lumped_mass;
     const int nodes = pile_.mesh().num_nodes();
     double jack_impulse = 0.0;  // up positive
-    // The contact followed through the substeps (penalty_contact.hpp: substep_force).
-    const std::vector<double> u0 = pile_.displacement();
-    std::vector<double>& f = substep_force_;
-    std::vector<double>& shift = substep_shift_;
     for (int s = 0; s < substeps_; ++s) {
-        const auto& u = pile_.displacement();
-        shift.resize(u.size());
-        for (std::size_t k = 0; k < u.size(); ++k) shift[k] = u[k] - u0[k];
-        f.assign(u.size(), 0.0);
-        contact_.substep_force(m.particles, shift, s * sub, sub, f);
         pile_.compute_internal_force();
         pile_.clear_external_force();
         for (int i = 0; i < nodes; ++i) {
@@ -135,7 +132,6 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         if (chain_) chain_->advance_displacement(sub);
         enthru_ -= f_blow * (pile_.head_displacement() - head_before);  // the force down, the head down
     }
-    contact_.finish_substeps(m.particles, dt);
     head_force_ = head.struck ? blow_impulse / dt : head.loaded ? target : -jack_impulse / dt;
 }
 

@@ -98,6 +98,8 @@ public:
     double head_settlement() const { return -pile_.head_displacement(); }  // m, down positive
     // The pile's momentum (the whole ring; velocities at the last half step), N s.
     std::array<double, 2> momentum() const;
+    // Damping ratio of the pile at omega = 1 / dt in an undamped stage (coupled_pile.cpp).
+    static constexpr double kStepModeDamping = 0.01;
 
 private:
     fem::ExplicitPile& pile_;
@@ -115,7 +117,6 @@ private:
     double enthru_ = 0.0;     // J, this blow's so far
     int enthru_stage_ = -1;   // the stage it counts
     std::optional<fem::HammerChain> chain_;  // a ram-cushion blow's hammer, from its impact on
-    std::vector<double> substep_force_, substep_shift_;  // per pile DOF, reused
 };
 
 }  // namespace pilempm::coupling

@@ -91,7 +91,6 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     segment_force_.assign(2 * s.a.size(), 0.0);
     totals_ = {};
     touches_.clear();
-    pairs_.clear();
     std::fill(p.external_force.begin(), p.external_force.end(), 0.0);
     // The search margin: the largest half-extent of a point domain along an axis.
     double margin = 0.0, half[4];
@@ -241,35 +240,9 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             segment_force_[2 * k + c] -= ring * f[c];
         }
         touches_.push_back({i, {nrm[0], nrm[1]}, {xs[0], xs[1]}});
-        pairs_.push_back({i, s.a[k], s.b[k], xi, {nrm[0], nrm[1]}, {t[0], t[1]}, kn, gap, ft, {0.0, 0.0}});
         ++totals_.points_in_contact;
         totals_.max_penetration = std::max(totals_.max_penetration, -gap);
     }
-}
-
-void PenaltyContact::substep_force(const mpm::Particles<2>& p, const std::vector<double>& shift, double since_start,
-                                   double sub, std::vector<double>& nodal) {
-    const double ring = settings_.ring, mu = settings_.friction;
-    for (Pair& c : pairs_) {
-        const double* v = &p.v[2 * c.point];
-        const double* da = &shift[2 * c.a];
-        const double* db = &shift[2 * c.b];
-        double closing = 0.0;  // the gap's change since the step began
-        for (int d = 0; d < 2; ++d) closing += (v[d] * since_start - (1.0 - c.xi) * da[d] - c.xi * db[d]) * c.n[d];
-        const double fn = std::max(0.0, -c.kn * (c.gap + closing));
-        const double ft = std::clamp(c.ft, -mu * fn, mu * fn);
-        for (int d = 0; d < 2; ++d) {
-            const double f = fn * c.n[d] + ft * c.t[d];
-            c.impulse[d] += f * sub;
-            nodal[2 * c.a + d] -= ring * (1.0 - c.xi) * f;
-            nodal[2 * c.b + d] -= ring * c.xi * f;
-        }
-    }
-}
-
-void PenaltyContact::finish_substeps(mpm::Particles<2>& p, double dt) {
-    for (const Pair& c : pairs_)
-        for (int d = 0; d < 2; ++d) p.external_force[2 * c.point + d] = c.impulse[d] / dt;
 }
 
 }  // namespace pilempm::coupling

@@ -80,19 +80,6 @@ public:
     const std::vector<double>& segment_force() const { return segment_force_; }
     const ContactTotals& totals() const { return totals_; }
     const std::vector<ContactTouch>& touches() const { return touches_; }
-
-    // The contact inside the master's substeps (a subcycled pile): each pair found by
-    // compute() keeps its stiffness, normal and tangent, and its gap is followed linearly
-    // through the step (the point at its velocity, the segment's nodes by `shift`, their
-    // displacement since the step began); the force on the master's nodes per substep goes
-    // into `nodal` (2 per node, added), its impulse on the point is summed. A force held
-    // from the step's start while the master's fast modes move under it would feed them
-    // (the pile left ringing in the soil grew unstable); this follows them.
-    void substep_force(const mpm::Particles<2>& p, const std::vector<double>& shift, double since_start, double sub,
-                       std::vector<double>& nodal);
-    // After the substeps: each point's force is its mean over the step (the impulse the
-    // master took, equal and opposite).
-    void finish_substeps(mpm::Particles<2>& p, double dt);
     // Per point: the tangential force it carries (N, along its segment's a -> b) and its
     // segment (-1 off contact), for restart.
     const std::vector<double>& tangential_force() const { return tangential_; }
@@ -119,15 +106,6 @@ private:
     bool started_ = false;         // the first step (and its overlaps) taken
     ContactTotals totals_;
     std::vector<ContactTouch> touches_;
-    // The pairs in contact at the step's start, for the substeps.
-    struct Pair {
-        long point = 0;
-        int a = 0, b = 0;
-        double xi = 0.0, n[2] = {0, 0}, t[2] = {0, 0};
-        double kn = 0.0, gap = 0.0, ft = 0.0;  // N/m, m (< 0), N
-        double impulse[2] = {0, 0};            // N s on the point over the substeps so far
-    };
-    std::vector<Pair> pairs_;
     // Segments binned on a uniform grid over the surface's box, grown by the search margin.
     double bin_origin_[2] = {0.0, 0.0}, bin_size_ = 1.0;
     int bins_[2] = {0, 0};

@@ -200,7 +200,7 @@ TEST(MpmResume, ARamOnTheCoupledPileStoppedAsItRidesTheHeadResumedWritesWhatAnUn
 }
 
 // A drive of two blows with a consolidation pause between them (the driving verification
-// with 10 ms blows, some 745 steps each), stopped in the second blow: the driver's
+// with 10 ms blows, some 375 steps each), stopped in the second blow: the driver's
 // blow bookkeeping (where the blow began, the refusal count) comes back with the rest.
 TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("drive");
@@ -213,7 +213,7 @@ TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneW
     }
     const fs::path file = dir / "drive.yaml";
     std::ofstream(file) << yaml;
-    check_resume(dir, file.string(), SIGTERM, 800);
+    check_resume(dir, file.string(), SIGTERM, 450);
     EXPECT_TRUE(fs::exists(dir / "whole" / "blows.csv"));
     fs::remove_all(dir);
 }
