@@ -246,7 +246,9 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
         m_.local_damping = st.local_damping;
         for (int d = 0; d < D; ++d) m_.gravity[d] = st.gravity_factor * gravity_[d];
         if (body_) body_->set_gravity_factor(st.gravity_factor);
+        // A blow that took the whole interval leaves its pause nothing (it ends as it begins).
         const bool nothing_left = st.blow_interval > 0.0 && st.duration <= 1e-12;
+        if (nothing_left) observer_->stage_end(state_.stage, st, StageReport{});
         const bool finished = nothing_left      ? true
                               : st.consolidation ? run_consolidation(st, stop)
                               : st.quasi_static  ? run_quasi_static(st, stop)
