@@ -54,6 +54,15 @@ struct AttachedPile {
     }
 };
 
+// The pile's mesh in the soil's frame (its toe at the frame's toe elevation): for ParaView
+// and the results file.
+template <int D>
+fem::PileMesh placed_pile_mesh(const io::MpmRun<D>& run) {
+    fem::PileMesh placed = run.pile.mesh;
+    for (int i = 0; i < placed.num_nodes(); ++i) placed.coordinates[2 * i + 1] += run.pile.frame.toe_elevation;
+    return placed;
+}
+
 // The seabed (m, the soil's frame) that depths count from: the K0 state's surface, else the
 // top of the highest material point's domain at the start.
 template <int D>
@@ -74,7 +83,8 @@ void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
     for (std::size_t k = 0; k < c.stages.size(); ++k)
         if (c.stages[k].blow) blows.push_back({static_cast<int>(k) + 1, c.stages[k].blow_number});
     if (blows.empty()) return;
-    const Table table = coupling::blow_table(history, blows, ground_elevation(c, run));
+    const double ground = ground_elevation(c, run);
+    const Table table = coupling::blow_table(history, blows, ground);
     const Table count = coupling::blow_count_table(table);
     io::write_csv(dir / "blows.csv", table);
     io::write_csv(dir / "blow_count.csv", count);
@@ -88,11 +98,8 @@ void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
     io::write_csv(dir / "blow_wall_times.csv", walls);
     std::vector<double> stress;
     coupled.pile().axial_stress(stress);
-    fem::PileMesh placed = run.pile.mesh;
-    for (int i = 0; i < placed.num_nodes(); ++i) placed.coordinates[2 * i + 1] += run.pile.frame.toe_elevation;
-    io::write_results_h5(dir / "results.h5", {table, count, history}, placed, coupled.pile().displacement(),
-                         coupled.pile().velocity(), stress, {{"ground_elevation_m", ground_elevation(c, run)}},
-                         {{"title", c.title}});
+    io::write_results_h5(dir / "results.h5", {table, count, history}, placed_pile_mesh(run), coupled.pile().displacement(),
+                         coupled.pile().velocity(), stress, {{"ground_elevation_m", ground}}, {{"title", c.title}});
 }
 
 // What the checks read of the case: its parameters and the first material's constants.
@@ -233,9 +240,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             output.set_body(coupled.get());
             // The pile in ParaView over the soil (its mesh placed in the soil's frame), with
             // its displacements, axial stress and contact forces.
-            fem::PileMesh placed = run.pile.mesh;
-            for (int i = 0; i < placed.num_nodes(); ++i) placed.coordinates[2 * i + 1] += run.pile.frame.toe_elevation;
-            pile_vtk = std::make_unique<io::PileVtkSeries>(staged.path() / "vtk", placed, "pile");
+            pile_vtk = std::make_unique<io::PileVtkSeries>(staged.path() / "vtk", placed_pile_mesh(run), "pile");
             output.also_at_snapshots([&pile, &coupled, &pile_vtk](double time) {
                 std::vector<double> stress;
                 pile->axial_stress(stress);

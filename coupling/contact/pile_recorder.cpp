@@ -22,34 +22,26 @@ ToeExtent toe_extent(const CoupledPile& pile, double cell) {
     return t;
 }
 
-// The mean excess pore pressure of the points within a cell of the toe's annulus and a cell
-// and a half below it (0 when dry or none there).
-double toe_pore_pressure(const mpm::MpmModel<2>& m, const CoupledPile& pile) {
+// In one pass over the points: the mean excess pore pressure of those within a cell of the
+// toe's annulus and a cell and a half below it (0 when dry or none there), and an open
+// pile's soil plug, from the toe to the highest point inside the wall (a quarter of a cell
+// clear of it; 0 for a closed pile).
+struct AtToe {
+    double pore_pressure = 0.0, plug_length = 0.0;
+};
+
+AtToe at_toe(const mpm::MpmModel<2>& m, const ToeExtent& t, double h) {
     const auto& p = m.particles;
-    if (p.pore_pressure.empty()) return 0.0;
-    const double h = std::min(m.grid.spacing[0], m.grid.spacing[1]);
-    const ToeExtent t = toe_extent(pile, h);
-    double sum = 0.0;
+    const bool wet = !p.pore_pressure.empty(), open = t.inner >= 0.25 * h;
+    double sum = 0.0, top = t.elevation;
     int n = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = p.x[2 * i], z = p.x[2 * i + 1];
-        if (r >= t.inner - h && r <= t.outer + h && z <= t.elevation && z >= t.elevation - 1.5 * h)
+        if (wet && r >= t.inner - h && r <= t.outer + h && z <= t.elevation && z >= t.elevation - 1.5 * h)
             sum += p.pore_pressure[i], ++n;
+        if (open && r < t.inner - 0.25 * h) top = std::max(top, z);
     }
-    return n ? sum / n : 0.0;
-}
-
-// An open pile's soil plug: from the toe to the highest point inside the wall (a quarter of
-// a cell clear of it); 0 for a closed pile.
-double plug_length(const mpm::MpmModel<2>& m, const CoupledPile& pile) {
-    const auto& p = m.particles;
-    const double h = std::min(m.grid.spacing[0], m.grid.spacing[1]);
-    const ToeExtent t = toe_extent(pile, h);
-    if (t.inner < 0.25 * h) return 0.0;
-    double top = t.elevation;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.x[2 * i] < t.inner - 0.25 * h) top = std::max(top, p.x[2 * i + 1]);
-    return top - t.elevation;
+    return {n ? sum / n : 0.0, open ? top - t.elevation : 0.0};
 }
 
 }  // namespace
@@ -75,10 +67,9 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     row.push_back(static_cast<double>(t.points_inside));
     row.push_back(t.max_penetration / std::min(m.grid.spacing[0], m.grid.spacing[1]));
     // The toe where the surface was placed this step (its lowest node, soil's frame).
-    const auto& x = pile_.surface().x;
-    double toe = 1e300;
-    for (std::size_t k = 1; k < x.size(); k += 2) toe = std::min(toe, x[k]);
-    row.push_back(x.empty() ? pile_.frame().toe_elevation : toe);
+    const double h = std::min(m.grid.spacing[0], m.grid.spacing[1]);
+    const ToeExtent toe = toe_extent(pile_, h);
+    row.push_back(toe.elevation);
     row.push_back(-pile_.pile().head_velocity());  // down positive: with the head force, F and Z v of a blow
     row.push_back(pile_.enthru());
     pile_.pile().axial_stress(stress_);
@@ -86,8 +77,9 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     for (double s : stress_) compression = std::max(compression, -s), tension = std::max(tension, s);
     row.push_back(compression);
     row.push_back(tension);
-    row.push_back(toe_pore_pressure(m, pile_));
-    row.push_back(plug_length(m, pile_));
+    const AtToe soil = at_toe(m, toe, h);
+    row.push_back(soil.pore_pressure);
+    row.push_back(soil.plug_length);
     row.push_back(pile_.pile().strain_energy() + pile_.pile().kinetic_energy(pile_.pile().velocity()));
 }
 
