@@ -70,16 +70,15 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     const PileHeadControl head = stage < static_cast<int>(head_.size()) ? head_[stage] : PileHeadControl{};
     // The target over the step: its mid-time's.
     const double target = head.driven || head.loaded ? head_target(head_, stage, time_in_stage + 0.5 * dt) : 0.0;
-    // A damped stage damps the pile too: stiffness-proportional, 5 % of critical in its
-    // first axial mode (fixed-free, omega_1 = pi c / 2L), more in the higher ones. An
-    // undamped stage (a blow) damps only what the soil's step cannot carry: 1 % of critical
-    // at omega = 1 / dt (the first mode some 1e-5, a 1 ms pulse's band 1e-4). The contact's
-    // force, held over the soil's step while the pile subcycles, otherwise feeds the pile's
-    // modes near pi / dt (the resonance of multiple-time-step methods): a struck pile left
-    // ringing in the soil grew without bound (coupled-ringing-pile.yaml; README).
-    const double length = pile_.mesh().z(pile_.mesh().head_nodes.front());
-    const double omega1 = std::numbers::pi * pile_.steel().wave_speed() / (2.0 * length);
-    pile_.set_stiffness_damping(m.local_damping > 0.0 ? 2.0 * 0.05 / omega1 : 2.0 * kStepModeDamping * dt);
+    // A damped stage damps the pile with the soil's local damping (Cundall's, alpha of the
+    // stage). Every stage damps what the soil's step cannot carry: stiffness-proportional,
+    // 1 % of critical at omega = 1 / dt (a blow's first mode some 1e-5, a 1 ms pulse's band
+    // 1e-4). The contact's force, held over the soil's step while the pile subcycles,
+    // otherwise feeds the pile's modes near pi / dt (the resonance of multiple-time-step
+    // methods): a struck pile left ringing in the soil grew without bound
+    // (coupled-ringing-pile.yaml; README).
+    pile_.set_local_damping(m.local_damping);
+    pile_.set_stiffness_damping(2.0 * kStepModeDamping * dt);
     double blow_impulse = 0.0;  // down positive
     if (head.struck && enthru_stage_ != stage) {
         // A new blow: the ram meets the head where it now is.

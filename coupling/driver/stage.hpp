@@ -27,6 +27,7 @@ struct StageSpec {
     long max_steps = 100000;     // quasi-static
     double tolerance = 1e-4;     // unbalanced force ratio that ends a quasi-static stage
     double local_damping = 0.0;  // Cundall's alpha
+    bool drained = false;        // coupled pore water held drained (MpmSolver::set_drained)
     // Gravity in this stage over the case's: n for n g in a centrifuge (the soil's body
     // forces, its pore water's and the pile's weight).
     double gravity_factor = 1.0;

@@ -244,6 +244,8 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
         if (st.blow_interval > 0.0) st.duration = st.blow_interval - (state_.stage_start_time - state_.blow_start_time);
         observer_->stage_begin(state_.stage, st);
         m_.local_damping = st.local_damping;
+        solver_.set_drained(st.drained);
+        solver_.set_static_boundaries(st.quasi_static);
         for (int d = 0; d < D; ++d) m_.gravity[d] = st.gravity_factor * gravity_[d];
         if (body_) body_->set_gravity_factor(st.gravity_factor);
         // A blow that took the whole interval leaves its pause nothing (it ends as it begins).

@@ -59,10 +59,16 @@ public:
     double dashpot_power(const std::vector<double>& v) const;  // W, rate of dissipation
     // Brings the pile to rest: zeroes every velocity (kinetic damping between blows).
     void stop() { std::fill(v_.begin(), v_.end(), 0.0); }
-    // Stiffness-proportional (Rayleigh) damping beta K v, for damped stages (jacking, a nil
-    // step): it damps the pile's vibration, strongest at high frequency, and leaves rigid
+    // Stiffness-proportional (Rayleigh) damping beta K v: it damps the pile's vibration,
+    // strongest at high frequency (the coupling's modes near pi / dt), and leaves rigid
     // motion alone, so a pile pushed at a steady speed feels no drag from it. 0: none.
     void set_stiffness_damping(double beta) { stiffness_damping_ = beta; }
+    // Cundall's local damping (damped stages): each DOF's unbalanced force less alpha times
+    // its size against the motion. It takes out vibration at every frequency without
+    // shrinking the stable step (stiffness damping strong in the first mode of a long pile
+    // is overdamped in the wall's through-thickness modes: thousands of substeps) and leaves
+    // a steady motion alone. 0: none.
+    void set_local_damping(double alpha) { local_damping_ = alpha; }
     // The stable step with that damping (the undamped one when beta = 0).
     double damped_stable_time_step() const;
     // A checkpoint's state back: u_n and v_{n-1/2}, a value per DOF each.
@@ -94,6 +100,7 @@ private:
     double head_mass_ = 0.0;
     double toe_reaction_ = 0.0;
     double stiffness_damping_ = 0.0;  // beta, s
+    double local_damping_ = 0.0;      // Cundall's alpha
     std::vector<double> damped_u_;     // u + beta v (scratch)
 };
 

@@ -71,6 +71,7 @@ struct MpmStageInput {
     double duration = 0.0;          // s (dynamic)
     long max_steps = 100000;        // quasi-static
     double tolerance = 1e-4;        // unbalanced force ratio (quasi-static)
+    bool drained = false;           // coupled pore water held drained (a drained nil step)
     bool pile_driven = false;       // the pile's head driven at pile_velocity (jacking, load test)
     double pile_velocity = 0.0;     // m/s, down positive (0: held)
     bool pile_loaded = false;       // the pile's head pushed by pile_force (a maintained load)

@@ -229,6 +229,10 @@ MpmStageInput read_stage(MapReader m) {
                                                              [](double x) { return x >= 0.0 && x < 1.0; }});
     }
     s.gravity_factor = m.number_or("gravity_factor", 1.0, positive("gravity over the case's (n for n g)"));
+    // drained: the coupled pore water at its hydrostatic pressure through the stage (a
+    // drained nil step); a consolidation is about the water's flow, so it has no such key.
+    if (!s.consolidation)
+        s.drained = m.choice_or("drainage", "coupled", {"coupled", "drained"}) == "drained";
     if (!s.consolidation)
         if (auto pm = m.optional_map("pile")) {
             // The pile's head in this stage: driven down at a velocity (0 holds it), pushed by a

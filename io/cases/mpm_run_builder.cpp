@@ -16,6 +16,40 @@ namespace pilempm::io {
 
 namespace {
 
+// A pile wished in place: a point of the shaft whose domain the wall cuts gives way to the
+// parts of it either side of the steel, each a point whose domain ends on the wall's face
+// (mass and volume in proportion), so the soil starts touching the wall inside and out.
+// Without it the points beside a wall thinner than a cell stand up to half a point's width
+// off it and the shaft carries nothing until the soil has moved that far. Slivers under a
+// tenth of the domain's width are dropped.
+template <int D>
+void split_at_the_wall(mpm::Particles<D>& p, std::vector<char>& keep, const fem::PileGeometry& g, double toe,
+                       double cone, bool axisymmetric) {
+    const std::size_t count = p.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const double hr = 0.5 * p.domain0[D * D * i], hz = 0.5 * p.domain0[D * D * i + D * (D - 1) + D - 1];
+        const double r = p.x[D * i], z = p.x[D * i + D - 1] - toe;
+        const double touch = 1e-9 * hz;
+        if (z - hz < cone - touch || z + hz > g.length() + touch) continue;  // the shaft's points only (not a cone's)
+        const double ri = g.inner_radius_at(z), ro = g.outer_radius_at(z);
+        if (r + hr <= ri || r - hr >= ro) continue;
+        keep[i] = 0;
+        const double pieces[2][2] = {{r - hr, std::min(ri, r + hr)}, {std::max(ro, r - hr), r + hr}};
+        for (const auto& piece : pieces) {
+            const double width = piece[1] - piece[0];
+            if (width < 0.2 * hr) continue;
+            double x[D], len[D];
+            for (int d = 0; d < D; ++d) x[d] = p.x[D * i + d], len[d] = p.domain0[D * D * i + D * d + d];
+            x[0] = 0.5 * (piece[0] + piece[1]);
+            len[0] = width;
+            const double share = width / (2.0 * hr) * (axisymmetric ? x[0] / r : 1.0);
+            p.add(x, p.mass[i] * share, p.volume[i] * share, len, p.material[i]);
+            p.porosity.back() = p.porosity[i];
+            keep.push_back(1);
+        }
+    }
+}
+
 // A length to the millimetre, as a message shows it.
 std::string metres(double x) {
     std::ostringstream out;
@@ -190,6 +224,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
                                 metres(highest_top) +
                                 " m (points fill whole grid cells: a region's top between two grid lines"
                                 " reaches the line above it)");
+        if (c.pile.wished_in_place) split_at_the_wall<D>(m.particles, keep, g, c.pile.toe_elevation, cone, c.axisymmetric);
         m.particles.keep_only(keep);
     }
     for (const auto& b : c.boundaries) {
@@ -286,6 +321,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         s.max_steps = st.max_steps;
         s.tolerance = st.tolerance;
         s.local_damping = st.local_damping;
+        s.drained = st.drained;
         s.gravity_factor = st.gravity_factor;
         s.consolidation = st.consolidation;
         s.steps = st.steps;

@@ -29,6 +29,11 @@ struct NodeCondition {
     // impermeable boundary) unless the boundary is drained; the water's own dashpots.
     bool drained = false;
     double water_dashpot[3] = {0, 0, 0};  // N s/m
+    // Absorbing boundaries (normal axes): held like a roller in static stages, whose
+    // reaction they keep as a constant force through the dynamic stages after (the weight
+    // the far field carried at rest), with their dashpots.
+    unsigned char absorbing[3] = {0, 0, 0};
+    double held_force[3] = {0, 0, 0};   // N
 };
 
 template <int D>

@@ -66,6 +66,7 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
                 if (d != axis) area *= g.tributary(d, c[d]);
             if (axisymmetric) area *= g.coordinate(0, c[0]);
             for (int d = 0; d < D; ++d) cond.dashpot[d] += density * (d == axis ? cp : cs) * area;
+            cond.absorbing[axis] = 1;
             cond.water_dashpot[axis] += water_impedance * area;
         }
     }

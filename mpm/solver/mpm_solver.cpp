@@ -81,6 +81,46 @@ double MpmSolver<D>::stable_time_step() const {
 }
 
 template <int D>
+SolverState MpmSolver<D>::state() const {
+    SolverState s{time_, steps_, absorbed_, external_work_, {}};
+    for (const auto& c : m_.grid.conditions) s.held_force.insert(s.held_force.end(), c.held_force, c.held_force + 3);
+    return s;
+}
+
+template <int D>
+void MpmSolver<D>::restore(const SolverState& s) {
+    time_ = s.time;
+    steps_ = s.steps;
+    absorbed_ = s.absorbed_energy;
+    external_work_ = s.external_work;
+    auto& conditions = m_.grid.conditions;
+    if (s.held_force.empty()) return;  // a checkpoint from before held boundaries: none held
+    if (s.held_force.size() != 3 * conditions.size())
+        throw std::invalid_argument("held boundary forces for " + std::to_string(s.held_force.size() / 3) + " of " +
+                                    std::to_string(conditions.size()) + " boundary nodes");
+    for (std::size_t c = 0; c < conditions.size(); ++c)
+        std::copy_n(s.held_force.begin() + 3 * c, 3, conditions[c].held_force);
+}
+
+template <int D>
+void MpmSolver<D>::set_drained(bool drained) {
+    if (drained == drained_) return;
+    drained_ = drained;
+    coupled_ = false;
+    for (std::size_t k = 0; k < drainage_.size(); ++k) {
+        drainage_[k] = m_.drainage.empty() ? MaterialDrainage{} : m_.drainage[k];
+        if (drained && drainage_[k].drainage == Drainage::Coupled) drainage_[k].drainage = Drainage::Drained;
+        coupled_ = coupled_ || drainage_[k].drainage == Drainage::Coupled;
+    }
+    auto& p = m_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (m_.drainage.empty() || m_.drainage[p.material[i]].drainage != Drainage::Coupled) continue;
+        p.pore_pressure[i] = 0.0;
+        for (int d = 0; d < D; ++d) p.w[D * i + d] = 0.0;
+    }
+}
+
+template <int D>
 double MpmSolver<D>::point_wave_speed(long i) const {
     const auto& p = m_.particles;
     const double rho = p.mass[i] / p.volume[i];
@@ -401,9 +441,13 @@ void MpmSolver<D>::update_grid(double dt) {
     for (int n = 0; n < nodes; ++n) {
         NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
         if (cond) std::fill(cond->reaction, cond->reaction + 3, 0.0);
+        if (cond && static_boundaries_) std::fill(cond->held_force, cond->held_force + 3, 0.0);
+        bool held_given = false;  // a node's held force goes to its first field with mass
         for (int f = 0; f < fields; ++f) {
             const int nodef = n * fields + f;
             const double mass = g.mass[nodef];
+            const double held_share = cond && !held_given && mass > tiny && !static_boundaries_ ? 1.0 : 0.0;
+            held_given = held_given || held_share > 0.0;
             for (int d = 0; d < D; ++d) {
                 const int k = D * nodef + d;
                 if (mass <= tiny) {
@@ -411,8 +455,11 @@ void MpmSolver<D>::update_grid(double dt) {
                     continue;
                 }
                 const double v0 = g.momentum[k] / mass;
-                double force = g.force[k];
-                if (cond && cond->fixed[d]) {
+                const double held = held_share > 0.0 ? cond->held_force[d] : 0.0;
+                double force = g.force[k] + held;
+                const bool absorbing_held = cond && static_boundaries_ && cond->absorbing[d];
+                if (cond && (cond->fixed[d] || absorbing_held)) {
+                    if (absorbing_held) cond->held_force[d] -= force;
                     // The force the support (or moving boundary) exerts to hold v: from the
                     // undamped nodal force, so damping never shows up as a reaction.
                     cond->reaction[d] += mass * (cond->prescribed[d] - v0) / dt - force;
@@ -430,7 +477,7 @@ void MpmSolver<D>::update_grid(double dt) {
                 const double c = cond ? cond->dashpot[d] : 0.0;
                 double v1 = ((mass / dt - 0.5 * c) * v0 + force) / (mass / dt + 0.5 * c);
                 if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
-                external_work_ += 0.5 * external_[k] * (v0 + v1) * dt;
+                external_work_ += 0.5 * (external_[k] + held) * (v0 + v1) * dt;
                 g.velocity[k] = v1;
                 g.acceleration[k] = (v1 - v0) / dt;
             }
@@ -658,7 +705,25 @@ void MpmSolver<D>::update_stress(double dt) {
         else p.volume[i] = p.volume0[i] * J;
         for (int k = 0; k < 6; ++k) p.strain[6 * i + k] += de[k];
     }
-    if (inverted > 0) throw std::runtime_error(std::to_string(inverted) + " material point(s) turned inside out (J <= 0)");
+    if (inverted > 0) {
+        // Where, for the user: the first such point (found again, off the hot loop).
+        long first = 0;
+        for (long i = 0; i < n; ++i) {
+            const double* Fi = &p.F[D * D * i];
+            const double J = D == 2 ? Fi[0] * Fi[3] - Fi[1] * Fi[2]
+                                    : Fi[0] * (Fi[4] * Fi[8] - Fi[5] * Fi[7]) - Fi[1] * (Fi[3] * Fi[8] - Fi[5] * Fi[6]) +
+                                          Fi[2] * (Fi[3] * Fi[7] - Fi[4] * Fi[6]);
+            if (!(J > 0.0)) {
+                first = i;
+                break;
+            }
+        }
+        std::string where;
+        for (int d = 0; d < D; ++d) where += (d ? ", " : "") + std::to_string(p.x[D * first + d]);
+        throw std::runtime_error(std::to_string(inverted) + " material point(s) turned inside out (J <= 0), the first (point " +
+                                 std::to_string(first) + ", material " + std::to_string(p.material[first]) + ") at (" +
+                                 where + ") m at t = " + std::to_string(time_) + " s");
+    }
     if (m_.smooth_dilatation) smooth_dilatation();
     if (saturated_) update_pore_water(dt);
     for (std::size_t mat = 0; mat < m_.materials.size(); ++mat) {

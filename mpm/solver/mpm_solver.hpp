@@ -85,6 +85,7 @@ struct SolverState {
     long steps = 0;
     double absorbed_energy = 0.0;  // J, work of the absorbing dashpots (energy leaving)
     double external_work = 0.0;    // J, work of the external forces (gravity, surface loads)
+    std::vector<double> held_force;  // N, 3 per grid condition: what absorbing boundaries hold
 };
 
 // Memory of a run: per point (its arrays and its stored stencil) and per stored grid node
@@ -121,17 +122,21 @@ public:
     double absorbed_energy() const { return absorbed_; }
     // Work done on the grid by the external forces (gravity, surface loads) so far, J.
     double external_work() const { return external_work_; }
+    // A stage in which the pore water drains freely (a drained nil step): coupled materials
+    // step as drained ones, the water with the skeleton at hydrostatic pressure, until set
+    // back. Their points' excess pressure and relative water velocity are zeroed whenever
+    // this changes (the drained state is where a coupled stage after it starts).
+    void set_drained(bool drained);
+    bool drained() const { return drained_; }
     void set_time(double t, long steps) {
         time_ = t;
         steps_ = steps;
     }
-    SolverState state() const { return {time_, steps_, absorbed_, external_work_}; }
-    void restore(const SolverState& s) {
-        time_ = s.time;
-        steps_ = s.steps;
-        absorbed_ = s.absorbed_energy;
-        external_work_ = s.external_work;
-    }
+    SolverState state() const;
+    void restore(const SolverState& s);
+    // Static stages (quasi-static): absorbing boundaries hold their normal and record the
+    // reaction; dynamic ones: they absorb and keep applying that reaction.
+    void set_static_boundaries(bool is_static) { static_boundaries_ = is_static; }
 
 private:
     void velocity_toward_node(const Stencil<D>& s, int k, const double* v, const double* C, double* out) const;
@@ -168,6 +173,8 @@ private:
     MpmModel<D>& m_;
     bool saturated_ = false;  // some material holds water
     bool coupled_ = false;    // ... with its own velocity field (v-w)
+    bool drained_ = false;    // coupled materials held drained (set_drained)
+    bool static_boundaries_ = false;  // absorbing boundaries held (set_static_boundaries)
     std::vector<MaterialDrainage> drainage_;  // per material (dry when the model gives none)
     std::vector<double> volume_before_;       // per point: volume before this step's update
     std::vector<int> void_ratio_state_;       // per material: its state "void_ratio" (-1: none), set from the porosity

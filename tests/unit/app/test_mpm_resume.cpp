@@ -206,7 +206,7 @@ TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneW
     const fs::path dir = fresh_dir("drive");
     std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
     for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
-                            {"blow_duration: 0.1 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}}) {
+                            {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}}) {
         const auto at = yaml.find(from);
         ASSERT_NE(at, std::string::npos) << from;
         yaml.replace(at, from.size(), to);

@@ -1,5 +1,5 @@
 // The pile keys of MPM cases: a pile needs an axisymmetric case and the wall model; one
-// starting inside the soil needs wished_in_place, which removes the soil in its wall; the
+// starting inside the soil needs wished_in_place, which cuts the soil at its wall; the
 // stages' head control is read; a valid case builds the wall mesh, the contact with the
 // whole ring's factor and a grid with a field each side of the wall.
 #include <gtest/gtest.h>
@@ -57,13 +57,35 @@ TEST(PileInput, APileStartingInTheSoilMustBeWishedInPlace) {
         const double r = p.x[2 * i], z = p.x[2 * i + 1];
         EXPECT_FALSE(r >= 0.18 && r <= 0.2 && z >= 5.0 && z <= 6.0) << "a point left in the wall at " << r << ", " << z;
     }
-    // A wall through the points' centres (r 0.17 to 0.18) takes the column at r = 0.175.
+    // A wall through the points' centres (r 0.17 to 0.18): the column at r = 0.175 (domains
+    // 0.15 to 0.2) gives way to a column either side whose domains end on the wall's faces,
+    // and the soil's mass is the region's less the steel's volume (per radian, exact for the
+    // midpoint rule in r): nothing lost, nothing left in the steel.
     const std::string thick = replaced(replaced(embedded, "  friction: 0.4", "  wished_in_place: true\n  friction: 0.4"),
                                        "outer_diameter: 0.4, wall_thickness: 0.02", "outer_diameter: 0.36, wall_thickness: 0.01");
     const fs::path thick_file = write(thick, "thick");
     const auto cut = pio::build_mpm_run<2>(pio::read_mpm_case(thick_file.string()));
     fs::remove(thick_file);
-    EXPECT_EQ(p.size() - cut.model.particles.size(), 20u);  // 1 m below the surface, points 5 cm apart
+    const auto& q = cut.model.particles;
+    EXPECT_EQ(q.size(), p.size() + 20u);  // 1 m below the surface, points 5 cm apart
+    double mass = 0.0;
+    int inside = 0, outside = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        mass += q.mass[i];
+        const double r = q.x[2 * i], z = q.x[2 * i + 1], half = 0.5 * q.domain0[4 * i];
+        if (z < 5.0 || z > 6.0 || r < 0.14 || r > 0.21) continue;
+        if (r < 0.17) {
+            EXPECT_NEAR(r + half, 0.17, 1e-12) << "inside the wall at z = " << z;
+            ++inside;
+        } else {
+            EXPECT_NEAR(r - half, 0.18, 1e-12) << "outside the wall at z = " << z;
+            ++outside;
+        }
+    }
+    EXPECT_EQ(inside, 20);
+    EXPECT_EQ(outside, 20);
+    const double steel = 1.0 * (0.18 * 0.18 - 0.17 * 0.17) / 2.0, region = 3.0 * 3.0 / 2.0 * 6.0;
+    EXPECT_NEAR(mass, 1900.0 * (region - steel), 1e-12 * 1900.0 * region);
     EXPECT_TRUE(run.pile.contact.ignore_initial_overlap);
 }
 

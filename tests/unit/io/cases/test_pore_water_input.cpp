@@ -76,4 +76,23 @@ TEST(PoreWaterInput, ValidCaseBuildsWaterFieldsGrainMassAndDarcyResistance) {
     for (double n : p.porosity) EXPECT_DOUBLE_EQ(n, 0.4);
 }
 
+// A stage may hold the coupled water drained (a drained nil step); the key takes drained or
+// coupled, and a consolidation, which is about the water's flow, has no such key.
+TEST(PoreWaterInput, AStageHoldsTheWaterDrainedOnlyWhenAsked) {
+    const std::string stage = "  - {name: consolidation, type: dynamic, duration: 1.0}";
+    const fs::path file = write(replaced(terzaghi(), stage, "  - {name: nil, type: quasi_static, drainage: drained}\n" + stage), "drained");
+    const auto c = pio::read_mpm_case(file.string());
+    fs::remove(file);
+    ASSERT_EQ(c.stages.size(), 2u);
+    EXPECT_TRUE(c.stages[0].drained);
+    EXPECT_FALSE(c.stages[1].drained);
+    const auto run = pio::build_mpm_run<2>(c);
+    EXPECT_TRUE(run.stages[0].drained);
+    const auto bad = error_of(replaced(terzaghi(), "type: dynamic, duration: 1.0", "type: dynamic, drainage: free, duration: 1.0"), "free");
+    EXPECT_NE(bad.find("stages[0].drainage"), std::string::npos) << bad;
+    EXPECT_NE(bad.find("drained"), std::string::npos) << bad;
+    const auto pause = error_of(replaced(terzaghi(), "type: dynamic, duration: 1.0", "type: consolidation, drainage: drained, duration: 1.0"), "pause");
+    EXPECT_NE(pause.find("drainage"), std::string::npos) << pause;
+}
+
 }  // namespace

@@ -140,6 +140,44 @@ TEST(TwoPhase, DragRelaxesRelativeVelocityAsBackwardEuler) {
     EXPECT_LT(worst, 1e-6 * 1e-3) << "expected w - v = " << expected;
 }
 
+// A drained stage (a drained nil step) on coupled soil: the block squeezed inward steps at
+// the drained P-wave speed sqrt(M / (rho_s + n rho_w)) with no excess pressure and the water
+// moving with the skeleton (momentum of both conserved); set back to coupled, the same
+// squeeze raises the excess pressure and the step is the v-w one again.
+TEST(TwoPhase, ADrainedStageHoldsTheWaterHydrostaticAndStepsAtTheDrainedWaveSpeed) {
+    MpmModel<2> m = saturated_block(1e-6);
+    auto squeeze = [&m] {
+        for (std::size_t i = 0; i < m.particles.size(); ++i)
+            for (int d = 0; d < 2; ++d) m.particles.v[2 * i + d] = -0.01 * (m.particles.x[2 * i + d] - 1.2);
+    };
+    squeeze();
+    MpmSolver<2> s(m);
+    const double coupled_dt = s.stable_time_step();
+    s.set_drained(true);
+    const double E = 1e6, nu = 0.3, M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+    const double c_drained = std::sqrt(M / (2000.0 - kPorosity * 1000.0 + kPorosity * 1000.0));
+    double v_max = 0.0;
+    for (double v : m.particles.v) v_max = std::max(v_max, std::abs(v));
+    const double dt = s.stable_time_step();
+    EXPECT_NEAR(dt, m.cfl * 0.2 / (c_drained + std::sqrt(2.0) * v_max), 1e-6 * dt);
+    EXPECT_GT(dt, 3.0 * coupled_dt);  // no water wave to resolve
+    const auto q0 = s.momentum();
+    for (int n = 0; n < 20; ++n) s.step(dt);
+    for (std::size_t i = 0; i < m.particles.size(); ++i) {
+        EXPECT_EQ(m.particles.pore_pressure[i], 0.0);
+        EXPECT_EQ(m.particles.w[2 * i] + m.particles.w[2 * i + 1], 0.0);
+    }
+    const auto q = s.momentum();
+    for (int d = 0; d < 2; ++d) EXPECT_NEAR(q[d], q0[d], 1e-12);
+    s.set_drained(false);
+    EXPECT_NEAR(s.stable_time_step() / coupled_dt, 1.0, 0.05);
+    squeeze();
+    for (int n = 0; n < 20; ++n) s.step(s.stable_time_step());
+    double p_max = 0.0;
+    for (double p : m.particles.pore_pressure) p_max = std::max(p_max, p);
+    EXPECT_GT(p_max, 100.0) << "the coupled water takes the squeeze again";
+}
+
 // Loose sand (hypoplastic, e = e_c0: contractive) under a 100 kPa surcharge, sheared back and
 // forth at constant volume of the water (coupled, k = 1e-8 m/s: undrained within a cycle):
 // the pore pressure rises toward the total stress, the effective stress toward zero
