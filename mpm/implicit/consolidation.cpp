@@ -111,7 +111,10 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
         const double vol = p.volume[i], n = p.porosity[i];
         const double* st = p.state.data() + static_cast<std::size_t>(p.state_stride) * i;
         const double M = m_.materials[mat]->p_wave_modulus_at(&p.stress[6 * i], st);
-        const double G = m_.materials[mat]->shear_modulus();
+        // The shear modulus at the same stress: a pressure-dependent model states G at its
+        // reference pressure, and that G beside a low-stress M gave a negative bulk modulus
+        // (soil near the surface pushed through itself in the first step of a pause).
+        const double G = m_.materials[mat]->shear_modulus() * M / m_.materials[mat]->p_wave_modulus();
         double lambda = M - 2.0 * G;
         if (undrained) lambda += Kw / n;  // its water cannot leave: the undrained bulk modulus
         const double pe = coupled || undrained ? p.pore_pressure[i] : 0.0;
