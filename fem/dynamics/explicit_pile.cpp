@@ -126,9 +126,7 @@ void ExplicitPile::compute_internal_force() {
 
 double ExplicitPile::damped_stable_time_step() const {
     // Central differences with damping beta K: omega dt <= 2 (sqrt(1 + xi^2) - xi), xi = beta omega / 2.
-    // Local damping adds up to alpha |f| to a force that brakes the motion: the stiffness
-    // seen is (1 + alpha) K at worst.
-    const double omega = 2.0 / ops_.stable_time_step * std::sqrt(1.0 + local_damping_);
+    const double omega = 2.0 / ops_.stable_time_step;
     const double xi = 0.5 * stiffness_damping_ * omega;
     return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi);
 }
@@ -195,20 +193,33 @@ void ExplicitPile::advance_velocity(double dt) {
     toe_reaction_ = support_reaction(c);
     // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
     // loop over all DOFs; the fixed ones are put back to rest after it.
-    if (local_damping_ > 0.0)
-        for (int i = 0; i < n; ++i) {
-            const double f = f_ext_[i] - f_int_[i];
-            const double against = v_[i] > 0.0 ? -local_damping_ * std::abs(f) : v_[i] < 0.0 ? local_damping_ * std::abs(f) : 0.0;
-            v_[i] = (c.keep[i] * v_[i] + f + against) / c.scale[i];
-        }
-    else
-        for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    if (vibration_damping_ > 0.0) damp_vibration(dt);
     for (int i : reaction_dofs_)
         if (fixed_[i]) v_[i] = 0.0;
     // Rigid head plate: the head DOFs share the momentum of the plate.
     double p = 0.0;
     for (int d : head_dofs_) p += m[d] * v_[d];
     for (int d : head_dofs_) v_[d] = p / head_mass_;
+}
+
+// v <- v_rigid + (v - v_rigid) exp(-c dt), v_rigid the mass-weighted mean axial velocity
+// (0 radially): the momentum is kept to round-off.
+void ExplicitPile::damp_vibration(double dt) {
+    const int n = mesh_.num_dofs(), dim = mesh_.dim;
+    const auto& m = ops_.lumped_mass;
+    double p = 0.0, mass = 0.0;
+    for (int i = dim - 1; i < n; i += dim) {
+        if (fixed_[i]) continue;
+        p += m[i] * v_[i];
+        mass += m[i];
+    }
+    const double rigid = mass > 0.0 ? p / mass : 0.0, keep = std::exp(-vibration_damping_ * dt);
+    for (int i = 0; i < n; ++i) {
+        if (fixed_[i]) continue;
+        const double about = i % dim == dim - 1 ? rigid : 0.0;
+        v_[i] = about + (v_[i] - about) * keep;
+    }
 }
 
 void ExplicitPile::add_head_velocity(double dv_up) {
