@@ -62,6 +62,7 @@ void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, cons
         std::printf("stage '%s': %ld steps, unbalanced force ratio %.3g (tolerance %.3g)%s\n", spec.name.c_str(),
                     report.steps, report.unbalanced_ratio, spec.tolerance,
                     report.in_equilibrium ? "" : "  NOT IN EQUILIBRIUM");
+    std::fflush(stdout);  // a long drive's log shows each blow as it ends
 }
 
 template <int D>
