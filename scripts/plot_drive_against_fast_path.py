@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The coupled model's drive beside the fast path's drivability sheet, on the same axes:
-usage `plot_drive_against_fast_path.py OUT.png --coupled LABEL=RUN_DIR ... --fast LABEL=CSV ...`.
+usage `plot_drive_against_fast_path.py OUT.png --coupled LABEL=RUN_DIR ... --fast LABEL=CSV ...`
+(the path after the last =).
 
 RUN_DIR holds a coupled drive's blows.csv (toe_depth_before_m, toe_depth_m per blow); CSV is a
 drivability sheet's drivability_<case>.csv (depth_m, blows_per_0.25m, cumulative_blows).
@@ -53,7 +54,7 @@ def main(argv):
         if "=" not in a or mode is None:
             print(f"expected LABEL=PATH after --coupled or --fast, got {a}", file=sys.stderr)
             return 2
-        (coupled if mode == "--coupled" else fast).append(a.split("=", 1))
+        (coupled if mode == "--coupled" else fast).append(a.rsplit("=", 1))
     fig, (ax_n, ax_c) = plt.subplots(1, 2, figsize=(10, 7), sharey=True)
     start = None
     deepest = 0.0
@@ -66,7 +67,7 @@ def main(argv):
         ax_c.plot(cumulative, toe, "-", color=colour, lw=2.0, label=label)
     for (label, csv), style in zip(fast, ["k--", "k:", "k-.", "0.5"]):
         f = read_columns(csv, ["depth_m", "blows_per_0.25m", "cumulative_blows"])
-        keep = [i for i, d in enumerate(f["depth_m"]) if start - STEP <= d <= deepest + 2.0]
+        keep = [i for i, d in enumerate(f["depth_m"]) if start - STEP <= d <= deepest + 1.0]
         if not keep:
             continue
         d = [f["depth_m"][i] for i in keep]
@@ -80,7 +81,9 @@ def main(argv):
                 base = c0 + (c1 - c0) * (start - d0) / (d1 - d0) if d1 > d0 else c1
                 break
         if base is not None:
-            ax_c.plot([f["cumulative_blows"][i] - base for i in keep], d, style, label=label)
+            below = [i for i in keep if f["depth_m"][i] >= start]
+            ax_c.plot([base * 0.0] + [f["cumulative_blows"][i] - base for i in below], [start] + [f["depth_m"][i] for i in below],
+                      style, label=label)
     ax_n.set_xlabel("Blows per 0.25 m")
     ax_c.set_xlabel("Cumulative blows from %.2f m" % start)
     ax_n.set_ylabel("Toe depth below the seabed (m)")

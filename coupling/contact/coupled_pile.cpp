@@ -85,6 +85,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     const bool damped = m.local_damping > 0.0;
     const double strongest = std::min(2.0 * 0.05 / omega1, 0.75 * pile_.operators().stable_time_step);
     pile_.set_vibration_damping(damped ? 2.0 * 0.05 * omega1 : 0.0);
+    pile_.set_local_damping(settling_);
     pile_.set_stiffness_damping(std::max(2.0 * kStepModeDamping * dt, damped ? strongest : 0.0));
     double blow_impulse = 0.0;  // down positive
     if (head.struck && enthru_stage_ != stage) {
@@ -144,6 +145,23 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
 void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage) {
     advance(m, dt, stage);
     soil.step(dt);
+}
+
+// A pause holds the contact forces while the soil consolidates under them: the pile moves
+// with the soil it bears on (the mean settlement of the points it pushes, weighted by the
+// vertical force on each), so that the next blow's first contact finds the gaps the forces
+// were held at, not opened by the settlement (the pile then fell under its weight into the
+// blow: the North Sea monopile's ENTHRU +3 %).
+void CoupledPile::follow_soil(const mpm::MpmModel<2>& m, const std::vector<double>& x_before) {
+    const auto& p = m.particles;
+    double moved = 0.0, weight = 0.0;
+    for (const ContactTouch& t : contact_.touches()) {
+        const long i = t.point;
+        const double w = std::abs(p.external_force[2 * i + 1]);  // the contact's force on it, held
+        moved += w * (p.x[2 * i + 1] - x_before[2 * i + 1]);
+        weight += w;
+    }
+    if (weight > 0.0) pile_.translate_axially(moved / weight);
 }
 
 double CoupledPile::max_speed() const {

@@ -81,6 +81,8 @@ public:
     double max_speed() const override;
     double toe_elevation() const override { return frame_.toe_elevation + pile_.toe_displacement(); }
     void set_gravity_factor(double factor) override { gravity_factor_ = factor; }
+    void set_settling(double alpha) override { settling_ = alpha; }
+    void follow_soil(const mpm::MpmModel<2>& m, const std::vector<double>& x_before) override;
     std::vector<std::pair<std::string, std::vector<double>>> state() const override;
     void restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) override;
 
@@ -107,6 +109,7 @@ private:
     PileFrame frame_;
     double gravity_;
     double gravity_factor_ = 1.0;
+    double settling_ = 0.0;  // Cundall's alpha on the pile while a blow settles
     bool cut_fields_;
     ToeSlipLine slip_;
     ContactSurface surface_;

@@ -18,10 +18,16 @@ public:
     // time_in_stage: s since the stage began (0 throughout a quasi-static stage).
     virtual void before_step(mpm::MpmModel<D>& m, int stage, bool quasi_static, double dt, double time_in_stage) = 0;
     virtual void come_to_rest() = 0;
+    // After a step in which the soil moved at rest (a pause's consolidation step), the body
+    // follows the soil it bears on; x_before: the points' positions before that step.
+    virtual void follow_soil(const mpm::MpmModel<D>& /*m*/, const std::vector<double>& /*x_before*/) {}
     // Its fastest node's speed (m/s) and its toe's elevation (m, the soil's frame): when a
     // blow has died out, and how far the body has gone.
     virtual double max_speed() const = 0;
     virtual double toe_elevation() const = 0;
+    // A blow settling (StageSpec::settle_damping): the body damps its own motion, rigid
+    // motion too, with Cundall's local damping alpha (0: not settling).
+    virtual void set_settling(double /*alpha*/) {}
     // The stage's gravity over the case's (n g in a centrifuge) for the body's own weight.
     virtual void set_gravity_factor(double factor) = 0;
     // Its state for a checkpoint, and back: named arrays of doubles.

@@ -35,6 +35,10 @@ struct StageSpec {
     // (no node faster than rest_speed, m/s) after min_duration s; 0: runs its duration.
     double rest_speed = 0.0;
     double min_duration = 0.0;
+    // From min_duration on, the stage's local damping becomes this (0: unchanged): a blow
+    // whose wave has passed settles to rest on the soil instead of rocking on it for
+    // seconds, so its set is read at rest and the pause starts from equilibrium.
+    double settle_damping = 0.0;
     // Impact driving: the blows and pauses of one drive share `drive` (>= 0; -1: none). After
     // a blow the driver ends the drive (goes on after its last stage) when the body's toe is
     // at end_toe_elevation or lower, or when refusal_blows blows in a row each set it less

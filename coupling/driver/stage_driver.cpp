@@ -161,7 +161,11 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
         if (st.rest_speed > 0.0 && body_ && state_.stage_steps > 0 &&
             solver_.time() - state_.stage_start_time >= st.min_duration && body_->max_speed() < st.rest_speed)
             break;
-        apply_loads(false, solver_.time() - state_.stage_start_time);
+        const double in_stage = solver_.time() - state_.stage_start_time;
+        const bool settling = st.settle_damping > 0.0 && state_.stage_steps > 0 && in_stage >= st.min_duration;
+        m_.local_damping = settling ? st.settle_damping : st.local_damping;
+        if (body_) body_->set_settling(settling ? st.settle_damping : 0.0);
+        apply_loads(false, in_stage);
         step(std::min(step_size(), t_end - solver_.time()), false);
         ++state_.stage_steps;
         if (!after_real_time_step(st, report, stop)) return false;
@@ -185,7 +189,9 @@ bool StageDriver<D>::run_consolidation(const StageSpec& st, const StopRequest* s
     for (long n = state_.stage_steps; n < st.steps; ++n) {
         apply_loads(true, solver_.time() - state_.stage_start_time);
         const double dt = n + 1 == st.steps ? t_end - solver_.time() : first * std::pow(r, static_cast<double>(n));
+        if (body_) x_before_ = m_.particles.x;
         const mpm::ConsolidationStepReport step = consolidation.step(dt);
+        if (body_) body_->follow_soil(m_, x_before_);
         last_consolidation_ = step;
         solver_.set_time(solver_.time() + dt, solver_.steps() + 1);
         solver_.set_unbalanced_force_ratio(step.unbalanced_ratio);
@@ -248,6 +254,7 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
         solver_.set_static_boundaries(st.quasi_static);
         for (int d = 0; d < D; ++d) m_.gravity[d] = st.gravity_factor * gravity_[d];
         if (body_) body_->set_gravity_factor(st.gravity_factor);
+        if (body_) body_->set_settling(0.0);
         // A blow that took the whole interval leaves its pause nothing (it ends as it begins).
         const bool nothing_left = st.blow_interval > 0.0 && st.duration <= 1e-12;
         if (nothing_left) observer_->stage_end(state_.stage, st, StageReport{});

@@ -117,6 +117,7 @@ private:
     Table history_;
     DriverState state_;
     mpm::ConsolidationStepReport last_consolidation_;
+    std::vector<double> x_before_;  // the points' positions before a consolidation step (scratch)
     std::array<double, D> gravity_;  // the case's, before a stage's factor
     double flip_dynamic_;  // the model's velocity transfer, restored after quasi-static stages
     bool apic_dynamic_;

@@ -126,7 +126,9 @@ void ExplicitPile::compute_internal_force() {
 
 double ExplicitPile::damped_stable_time_step() const {
     // Central differences with damping beta K: omega dt <= 2 (sqrt(1 + xi^2) - xi), xi = beta omega / 2.
-    const double omega = 2.0 / ops_.stable_time_step;
+    // Local damping adds up to alpha |f| to a force that brakes the motion: the stiffness
+    // seen is (1 + alpha) K at worst.
+    const double omega = 2.0 / ops_.stable_time_step * std::sqrt(1.0 + local_damping_);
     const double xi = 0.5 * stiffness_damping_ * omega;
     return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi);
 }
@@ -193,7 +195,14 @@ void ExplicitPile::advance_velocity(double dt) {
     toe_reaction_ = support_reaction(c);
     // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
     // loop over all DOFs; the fixed ones are put back to rest after it.
-    for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    if (local_damping_ > 0.0)
+        for (int i = 0; i < n; ++i) {
+            const double f = f_ext_[i] - f_int_[i];
+            const double against = v_[i] > 0.0 ? -local_damping_ * std::abs(f) : v_[i] < 0.0 ? local_damping_ * std::abs(f) : 0.0;
+            v_[i] = (c.keep[i] * v_[i] + f + against) / c.scale[i];
+        }
+    else
+        for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
     if (vibration_damping_ > 0.0) damp_vibration(dt);
     for (int i : reaction_dofs_)
         if (fixed_[i]) v_[i] = 0.0;
@@ -220,6 +229,10 @@ void ExplicitPile::damp_vibration(double dt) {
         const double about = i % dim == dim - 1 ? rigid : 0.0;
         v_[i] = about + (v_[i] - about) * keep;
     }
+}
+
+void ExplicitPile::translate_axially(double delta) {
+    for (int i = mesh_.dim - 1; i < mesh_.num_dofs(); i += mesh_.dim) u_[i] += delta;
 }
 
 void ExplicitPile::add_head_velocity(double dv_up) {

@@ -71,8 +71,14 @@ public:
     // pile's first mode is overdamped in its wall's through-thickness modes: 150 substeps
     // a soil step for a 77 m monopile). 0: none.
     void set_vibration_damping(double rate) { vibration_damping_ = rate; }
+    // Cundall's local damping: each DOF's unbalanced force less alpha times its size against
+    // its motion. It brings a pile rocking on the soil to rest (a blow settling), and drags
+    // a pile pushed at a steady speed, so it is not for jacking. 0: none.
+    void set_local_damping(double alpha) { local_damping_ = alpha; }
     // The stable step with that damping (the undamped one when beta = 0).
     double damped_stable_time_step() const;
+    // Moves the whole pile axially by delta (m, up positive) without straining it.
+    void translate_axially(double delta);
     // A checkpoint's state back: u_n and v_{n-1/2}, a value per DOF each.
     void restore(const std::vector<double>& u, const std::vector<double>& v);
 
@@ -104,6 +110,7 @@ private:
     double toe_reaction_ = 0.0;
     double stiffness_damping_ = 0.0;  // beta, s
     double vibration_damping_ = 0.0;  // 1/s (set_vibration_damping)
+    double local_damping_ = 0.0;      // Cundall's alpha
     std::vector<double> damped_u_;     // u + beta v (scratch)
 };
 

@@ -169,6 +169,8 @@ void read_drive(MapReader m, const MpmCase& c, int drive, std::vector<MpmStageIn
     blow.min_duration = m.number_or("min_blow_duration", -1.0, non_negative("the shortest blow in s"));
     blow.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
                                                              [](double x) { return x >= 0.0 && x < 1.0; }});
+    blow.settle_damping = m.number_or("settle_damping", 0.0, {"a damping coefficient from 0 to 1",
+                                                               [](double x) { return x >= 0.0 && x < 1.0; }});
     blow.gravity_factor = m.number_or("gravity_factor", 1.0, positive("gravity over the case's (n for n g)"));
     if (m.has("target_toe_elevation"))
         blow.end_toe_elevation = m.number("target_toe_elevation", {"an elevation in m", [](double) { return true; }});

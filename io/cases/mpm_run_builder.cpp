@@ -332,6 +332,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         s.blow = st.blow;
         s.rest_speed = st.rest_speed;
         s.min_duration = st.blow ? blow_min_duration(c, st) : 0.0;
+        s.settle_damping = st.settle_damping;
         s.end_toe_elevation = st.end_toe_elevation;
         s.refusal_set = st.refusal_set;
         s.refusal_blows = st.refusal_blows;

@@ -327,3 +327,50 @@ TEST(StageDriver, ADriveEndsAtRefusal) {
     EXPECT_EQ(drive_stages_run(0.001, -1e300, 0.002, 2, end), (std::vector<double>{1, 2, 6}));
     EXPECT_EQ(drive_stages_run(0.003, -1e300, 0.002, 2, end), (std::vector<double>{1, 2, 3, 4, 5, 6}));
 }
+
+// A blow with settle_damping: undamped while its wave runs (min_duration), then the soil's
+// local damping and the body's settling both at settle_damping; the stage after starts
+// without either.
+TEST(StageDriver, ABlowSettlesOnceItsWaveHasPassed) {
+    struct Seen {
+        double time_in_stage, soil_damping, body_damping;
+        int stage;
+    };
+    class SettlingBody final : public CoupledBody<2> {
+    public:
+        std::vector<Seen> seen;
+        double alpha = 0.0;
+        double stable_time_step(const mpm::MpmModel<2>&, double soil_dt) const override { return soil_dt; }
+        void before_step(mpm::MpmModel<2>& m, int stage, bool, double, double time_in_stage) override {
+            seen.push_back({time_in_stage, m.local_damping, alpha, stage});
+        }
+        void come_to_rest() override {}
+        void set_gravity_factor(double) override {}
+        void set_settling(double a) override { alpha = a; }
+        double max_speed() const override { return 1.0; }  // never at rest
+        double toe_elevation() const override { return 1.0; }
+        std::vector<std::pair<std::string, std::vector<double>>> state() const override { return {}; }
+        void restore(const std::vector<std::pair<std::string, std::vector<double>>>&) override {}
+    };
+    auto m = block();
+    StageSpec b = dynamic("blow", 0.004);
+    b.blow = true;
+    b.rest_speed = 1e-3;
+    b.min_duration = 0.002;
+    b.settle_damping = 0.6;
+    const std::vector<StageSpec> stages{b, dynamic("after", 0.001)};
+    SettlingBody body;
+    StageDriver<2> d(m, stages, {}, {});
+    d.couple(&body);
+    d.run();
+    int settled = 0, before = 0;
+    for (const Seen& s : body.seen) {
+        const bool settling = s.stage == 0 && s.time_in_stage >= 0.002;
+        EXPECT_EQ(s.soil_damping, settling ? 0.6 : 0.0) << "stage " << s.stage << " at " << s.time_in_stage;
+        EXPECT_EQ(s.body_damping, settling ? 0.6 : 0.0) << "stage " << s.stage << " at " << s.time_in_stage;
+        settled += settling;
+        before += s.stage == 0 && !settling;
+    }
+    EXPECT_GT(settled, 0);
+    EXPECT_GT(before, 0);
+}
