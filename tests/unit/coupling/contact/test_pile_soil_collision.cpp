@@ -164,3 +164,36 @@ TEST(PileSoilCollision, MomentumIsConservedAndTheStrikerStops) {
     }
     EXPECT_GT(most_substeps, 1);  // the pile subcycled inside the soil's step
 }
+
+// A pause's settlement: the pile follows the points it bears on (weighted by their contact
+// force), not the soil elsewhere; it moves rigidly, so its toe moves by the settlement.
+TEST(PileContactSurface, InAPauseThePileFollowsTheSoilItBearsOn) {
+    const double h = 0.05, v0 = 1.0;
+    fem::ExplicitPile pile(tube_mesh(h / 6.0), bar_material(), {});
+    mpm::MpmModel<2> m;
+    m.axisymmetric = true;
+    m.grid.origin = {0.0, -0.1};
+    m.grid.spacing = {h, h};
+    m.grid.cells = {64, 100};
+    m.grid.allocate();
+    m.flip = 1.0;
+    m.materials.push_back(std::make_unique<mpm::LinearElastic>(kModulus, 0.0));
+    mpm::fill_region<2>(m.grid, m.particles, [](const double* x) { return x[0] > kInner && x[0] < kOuter && x[1] > 0.0 && x[1] < kLength; },
+                        2, kDensity, 0, true);
+    for (std::size_t i = 0; i < m.particles.size(); ++i) m.particles.v[2 * i + 1] = v0;
+    mpm::MpmSolver<2> soil(m);
+    ContactSettings settings;
+    settings.ring = full_ring(1.0);
+    CoupledPile coupled(pile, settings, PileFrame{kLength + 0.2 * h}, 0.0, false);
+    const double soil_dt = soil.stable_time_step();
+    for (int n = 0; n < 2000 && coupled.contact().touches().empty(); ++n) coupled.step(soil, m, coupled.stable_time_step(m, soil_dt));
+    ASSERT_FALSE(coupled.contact().touches().empty());
+    const std::vector<double> before = m.particles.x;
+    std::vector<char> touching(m.particles.size(), 0);
+    for (const ContactTouch& t : coupled.contact().touches()) touching[t.point] = 1;
+    const double settlement = 1.0e-3;
+    for (std::size_t i = 0; i < m.particles.size(); ++i) m.particles.x[2 * i + 1] -= touching[i] ? settlement : 5.0 * settlement;
+    const double toe = coupled.toe_elevation();
+    coupled.follow_soil(m, before);
+    EXPECT_NEAR(coupled.toe_elevation(), toe - settlement, 1e-12);
+}
