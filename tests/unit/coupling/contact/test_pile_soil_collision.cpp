@@ -66,11 +66,8 @@ struct Collision {
     int substeps;
 };
 
-// Cells of h; the pile's elements h / 6 along the axis, so it subcycles inside each step.
-Collision collide(double h) {
-    const double v0 = 1.0, gap = 0.2 * h;
-    fem::ExplicitPile pile(tube_mesh(h / 6.0), bar_material(), {});
-    // The MPM striker: the same tube below the pile's toe, moving up at v0.
+// The MPM striker: the same tube below the pile's toe, moving up at v0, on cells of h.
+mpm::MpmModel<2> striker(double h, double v0) {
     mpm::MpmModel<2> m;
     m.axisymmetric = true;
     m.grid.origin = {0.0, -0.1};
@@ -84,6 +81,14 @@ Collision collide(double h) {
     mpm::fill_region<2>(m.grid, m.particles, [](const double* x) { return x[0] > kInner && x[0] < kOuter && x[1] > 0.0 && x[1] < kLength; },
                         2, kDensity, 0, true);
     for (std::size_t i = 0; i < m.particles.size(); ++i) m.particles.v[2 * i + 1] = v0;
+    return m;
+}
+
+// Cells of h; the pile's elements h / 6 along the axis, so it subcycles inside each step.
+Collision collide(double h) {
+    const double v0 = 1.0, gap = 0.2 * h;
+    fem::ExplicitPile pile(tube_mesh(h / 6.0), bar_material(), {});
+    mpm::MpmModel<2> m = striker(h, v0);
     mpm::MpmSolver<2> soil(m);
     ContactSettings settings;
     settings.ring = full_ring(1.0);
@@ -170,17 +175,7 @@ TEST(PileSoilCollision, MomentumIsConservedAndTheStrikerStops) {
 TEST(PileContactSurface, InAPauseThePileFollowsTheSoilItBearsOn) {
     const double h = 0.05, v0 = 1.0;
     fem::ExplicitPile pile(tube_mesh(h / 6.0), bar_material(), {});
-    mpm::MpmModel<2> m;
-    m.axisymmetric = true;
-    m.grid.origin = {0.0, -0.1};
-    m.grid.spacing = {h, h};
-    m.grid.cells = {64, 100};
-    m.grid.allocate();
-    m.flip = 1.0;
-    m.materials.push_back(std::make_unique<mpm::LinearElastic>(kModulus, 0.0));
-    mpm::fill_region<2>(m.grid, m.particles, [](const double* x) { return x[0] > kInner && x[0] < kOuter && x[1] > 0.0 && x[1] < kLength; },
-                        2, kDensity, 0, true);
-    for (std::size_t i = 0; i < m.particles.size(); ++i) m.particles.v[2 * i + 1] = v0;
+    mpm::MpmModel<2> m = striker(h, v0);
     mpm::MpmSolver<2> soil(m);
     ContactSettings settings;
     settings.ring = full_ring(1.0);
