@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mpm/points/deformation.hpp"
+
 namespace pilempm::mpm {
 
 namespace {
@@ -326,9 +328,7 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
         if (m_.axisymmetric) {
             p.volume[i] *= 1.0 + de[0] + de[1] + de[2];
         } else {
-            const double J = D == 2 ? Fn[0] * Fn[3] - Fn[1] * Fn[2]
-                                    : Fn[0] * (Fn[4] * Fn[8] - Fn[5] * Fn[7]) - Fn[1] * (Fn[3] * Fn[8] - Fn[5] * Fn[6]) +
-                                          Fn[2] * (Fn[3] * Fn[7] - Fn[4] * Fn[6]);
+            const double J = determinant<D>(Fn);
             p.volume[i] = p.volume0[i] * J;
         }
         for (int k = 0; k < 6; ++k) p.strain[6 * i + k] += de[k];

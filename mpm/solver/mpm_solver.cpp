@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpm/points/deformation.hpp"
 #include "mpm/grid/field_contact.hpp"
 #include "mpm/solver/objective_rotation.hpp"
 #include "mpm/solver/solver_passes.hpp"
@@ -695,9 +696,7 @@ void MpmSolver<D>::update_stress(double dt) {
                 Fn[D * a + b] = v;
             }
         for (int k = 0; k < D * D; ++k) p.F[D * D * i + k] = Fn[k];
-        double J = D == 2 ? Fn[0] * Fn[3] - Fn[1] * Fn[2]
-                          : Fn[0] * (Fn[4] * Fn[8] - Fn[5] * Fn[7]) - Fn[1] * (Fn[3] * Fn[8] - Fn[5] * Fn[6]) +
-                                Fn[2] * (Fn[3] * Fn[7] - Fn[4] * Fn[6]);
+        double J = determinant<D>(Fn);
         if (!(J > 0.0)) ++inverted;
         // Volume per radian in axisymmetry grows with the hoop stretch too.
         if (saturated_) volume_before_[i] = p.volume[i];
@@ -709,11 +708,7 @@ void MpmSolver<D>::update_stress(double dt) {
         // Where, for the user: the first such point (found again, off the hot loop).
         long first = 0;
         for (long i = 0; i < n; ++i) {
-            const double* Fi = &p.F[D * D * i];
-            const double J = D == 2 ? Fi[0] * Fi[3] - Fi[1] * Fi[2]
-                                    : Fi[0] * (Fi[4] * Fi[8] - Fi[5] * Fi[7]) - Fi[1] * (Fi[3] * Fi[8] - Fi[5] * Fi[6]) +
-                                          Fi[2] * (Fi[3] * Fi[7] - Fi[4] * Fi[6]);
-            if (!(J > 0.0)) {
+            if (!(determinant<D>(&p.F[D * D * i]) > 0.0)) {
                 first = i;
                 break;
             }
