@@ -3,7 +3,8 @@
 // its wall time) and the VTK series (every .vtu and the .pvd), byte for byte. Checked for
 // a dynamic stage (the 1D wave, FLIP and APIC), for a run stopped in its quasi-static
 // stage that goes on to a dynamic one, for saturated soil stopped in a consolidation
-// pause and in the blow after it, for an FE pile jacked into the soil, on a graded grid,
+// pause and in the blow after it, for an FE pile jacked into the soil, for a drive after a
+// drained nil step on a held absorbing base stopped as a blow settles, on a graded grid,
 // and for a stop during a verification's grid-sequence reruns.
 #include <gtest/gtest.h>
 
@@ -214,6 +215,31 @@ TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneW
     const fs::path file = dir / "drive.yaml";
     std::ofstream(file) << yaml;
     check_resume(dir, file.string(), SIGTERM, 450);
+    EXPECT_TRUE(fs::exists(dir / "whole" / "blows.csv"));
+    fs::remove_all(dir);
+}
+
+// The same drive after a drained nil step on an absorbing base (held as a roller in the nil
+// step, its reaction then a constant force), each blow damped to rest once its wave has
+// passed (settle_damping), stopped in the second blow as it settles: the held base force,
+// the water held hydrostatic then coupled, and the settling switch come back exactly.
+TEST(MpmResume, ADriveAfterADrainedNilStepOnAHeldBaseStoppedAsItsBlowSettlesResumesExactly) {
+    const fs::path dir = fresh_dir("drained-drive");
+    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
+    for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
+                            {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"},
+                            {"{plane: y_min, type: fixed}", "{plane: y_min, type: absorbing}"},
+                            {"stages:\n", "stages:\n  - {name: nil, type: quasi_static, drainage: drained, max_steps: 200, "
+                                          "tolerance: 1.0e-12, local_damping: 0.7}\n"},
+                            {"    interval: 0.5 ", "    settle_damping: 0.7\n    interval: 0.5 "}}) {
+        const auto at = yaml.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        yaml.replace(at, from.size(), to);
+    }
+    const fs::path file = dir / "drained-drive.yaml";
+    std::ofstream(file) << yaml;
+    // 200 nil steps, blows of some 375 steps settling from 4 ms (of 10), a pause of 8.
+    check_resume(dir, file.string(), SIGTERM, 200 + 375 + 8 + 250);
     EXPECT_TRUE(fs::exists(dir / "whole" / "blows.csv"));
     fs::remove_all(dir);
 }
