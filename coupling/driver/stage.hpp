@@ -32,9 +32,12 @@ struct StageSpec {
     // forces, its pore water's and the pile's weight).
     double gravity_factor = 1.0;
     // A dynamic stage may end before its duration once the coupled body has come to rest
-    // (no node faster than rest_speed, m/s) after min_duration s; 0: runs its duration.
+    // after min_duration s: no node faster than rest_speed (m/s; 0: runs its duration) for
+    // rest_span s on end, so a pile bouncing on the soil is not taken at rest at the top of
+    // a bounce, where its speed passes through zero.
     double rest_speed = 0.0;
     double min_duration = 0.0;
+    double rest_span = 0.0;
     // From min_duration on, the stage's local damping becomes this (0: unchanged): a blow
     // whose wave has passed settles to rest on the soil instead of rocking on it for
     // seconds, so its set is read at rest and the pause starts from equilibrium.

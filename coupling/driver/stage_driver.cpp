@@ -156,12 +156,16 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
     const double t_end = state_.stage_start_time + st.duration;
     StageReport report;
     while (solver_.time() < t_end - 1e-15) {
-        // A blow has died out: the body at rest. Asked before the step, of the state a
-        // checkpoint holds, so a resumed run decides as the uninterrupted one did.
-        if (st.rest_speed > 0.0 && body_ && state_.stage_steps > 0 &&
-            solver_.time() - state_.stage_start_time >= st.min_duration && body_->max_speed() < st.rest_speed)
-            break;
+        // A blow has died out: the body at rest for rest_span. Asked before the step, of the
+        // state a checkpoint holds, so a resumed run decides as the uninterrupted one did.
         const double in_stage = solver_.time() - state_.stage_start_time;
+        if (st.rest_speed > 0.0 && body_ && state_.stage_steps > 0) {
+            if (body_->max_speed() >= st.rest_speed) state_.rest_since = -1.0;
+            else if (state_.rest_since < 0.0) state_.rest_since = solver_.time();
+            if (in_stage >= st.min_duration && state_.rest_since >= 0.0 &&
+                solver_.time() - state_.rest_since >= st.rest_span - 1e-15)
+                break;
+        }
         const bool settling = st.settle_damping > 0.0 && state_.stage_steps > 0 && in_stage >= st.min_duration;
         m_.local_damping = settling ? st.settle_damping : st.local_damping;
         if (body_) body_->set_settling(settling ? st.settle_damping : 0.0);
@@ -209,6 +213,7 @@ void StageDriver<D>::begin_stage(const StageSpec& st) {
     state_.stage_begun = true;
     state_.stage_start_time = solver_.time();
     state_.stage_steps = 0;
+    state_.rest_since = -1.0;
     if (st.blow) {
         state_.blow_start_time = solver_.time();
         state_.blow_start_toe = body_ ? body_->toe_elevation() : 0.0;

@@ -32,6 +32,8 @@ struct DriverState {
     double blow_start_time = 0.0;
     double blow_start_toe = 0.0;
     int low_set_blows = 0;
+    // s: since when the body has been slower than the stage's rest_speed (< 0: moving).
+    double rest_since = -1.0;
 };
 
 struct DriverSettings {

@@ -167,6 +167,7 @@ void read_drive(MapReader m, const MpmCase& c, int drive, std::vector<MpmStageIn
     blow.duration = m.number("blow_duration", positive("the longest a blow's dynamic phase runs, in s"));
     blow.rest_speed = m.number_or("rest_speed", 0.005, positive("the pile's speed at rest in m/s (the blow then ends)"));
     blow.min_duration = m.number_or("min_blow_duration", -1.0, non_negative("the shortest blow in s"));
+    blow.rest_span = m.number_or("rest_span", -1.0, non_negative("how long in s the pile must stay below rest_speed"));
     blow.local_damping = m.number_or("local_damping", 0.0, {"a damping coefficient from 0 to 1",
                                                              [](double x) { return x >= 0.0 && x < 1.0; }});
     blow.settle_damping = m.number_or("settle_damping", 0.0, {"a damping coefficient from 0 to 1",
@@ -455,6 +456,8 @@ MpmCase read_mpm_case(const std::string& file) {
             c.verification["blow_stage"] = v->integer_or("blow_stage", 1, 1);
         // hammer_energy_every_blow: the blows a drive must have struck.
         if (v->has("blows")) c.verification["blows"] = v->integer_or("blows", 1, 1);
+        if (v->has("energy_tolerance"))
+            c.verification["energy_tolerance"] = v->number("energy_tolerance", positive("a share of the closed form's energy"));
         if (v->has("front_thickness"))
             c.verification["front_thickness"] = v->number("front_thickness", positive("a deposit thickness in m"));
         if (v->has("pulse_duration"))

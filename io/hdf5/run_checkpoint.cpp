@@ -23,6 +23,7 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
         {"blow_start_time", s.blow_start_time},
         {"blow_start_toe", s.blow_start_toe},
         {"low_set_blows", static_cast<double>(s.low_set_blows)},
+        {"rest_since", s.rest_since},
         {"absorbed_energy", run.solver.absorbed_energy},
         {"external_work", run.solver.external_work},
     };
@@ -56,6 +57,7 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     run.driver.blow_start_time = scalar("blow_start_time");
     run.driver.blow_start_toe = scalar("blow_start_toe");
     run.driver.low_set_blows = static_cast<int>(scalar("low_set_blows"));
+    run.driver.rest_since = scalar("rest_since");
     run.solver.absorbed_energy = scalar("absorbed_energy");
     run.solver.external_work = scalar("external_work");
     for (const auto& [name, values] : info.extras.arrays) {

@@ -192,11 +192,14 @@ VerificationCheck hammer_energy(const MpmCheckContext& c, const Table& history) 
 // the same F0^2 t_i / (2 Z) into the pile (no wave back at the head before t_i, whatever the
 // soil did in the blows and pauses before). The blows are the stages where ENTHRU is not
 // zero; the blow furthest from the closed form is reported, and all `blows` must have run.
+// Within 0.5 % unless `energy_tolerance` says otherwise (a pile still moving on the soil
+// when the next blow strikes takes a little more or less).
 std::vector<VerificationCheck> hammer_energy_every_blow(const MpmCheckContext& c, const Table& history) {
     const char* check = "hammer_energy_every_blow";
     const double peak = parameter(c, "impulse_peak", check), duration = parameter(c, "impulse_time", check);
     const double impedance = parameter(c, "pile_impedance", check), blows = parameter(c, "blows", check);
     const double reference = peak * peak * duration / (2.0 * impedance);
+    const auto tolerance = c.parameters.count("energy_tolerance") ? c.parameters.at("energy_tolerance") : 0.005;
     const auto& st = column(history, "stage");
     const auto& enthru = column(history, "enthru_J");
     std::map<double, double> per_stage;  // the blow's stage, its ENTHRU at the end
@@ -218,7 +221,7 @@ std::vector<VerificationCheck> hammer_energy_every_blow(const MpmCheckContext& c
                                           "at least -1 %");
     ledger.at_least = true;
     ledger.passed = std::isfinite(ledger.computed) && ledger.computed >= ledger.reference;
-    return {make_check("hammer_energy_worst_blow_J", per_stage.empty() ? 0.0 : worst, reference, 0.005, true,
+    return {make_check("hammer_energy_worst_blow_J", per_stage.empty() ? 0.0 : worst, reference, tolerance, true,
                        "every half-sine blow of a drive on a pile head without reflections: F0^2 t_i / (2 Z)"),
             ledger,
             make_check("blows_struck", static_cast<double>(per_stage.size()), blows, 0.0, false,

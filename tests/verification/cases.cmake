@@ -96,3 +96,14 @@ pilempm_case_test(validate_isfog2020_three_locations cases/drivability/isfog2020
 # Coupling verification 2 (issue 13): the rigid circular punch on an elastic half-space on
 # two graded grids (a/4, a/8; about 9 min on two threads, 16 on one): long.
 pilempm_case_test(long_rigid_punch cases/verification/rigid-punch.yaml long)
+# Issue 14: the North Sea monopile's first 30 blows in the coupled model (shipped case,
+# reduced size; some 15 min on two threads): every blow's ENTHRU within 2 % of
+# F0^2 t_i / (2 Z) (measured +0.09 to +1.54 % over 32 blows) and the steel's energy below it.
+add_test(NAME long_north_sea_drive_energy
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:pilempm>
+          -DCASE=${PROJECT_SOURCE_DIR}/cases/driving/north-sea-monopile.yaml
+          "-DEDITS=blows: 2000=>blows: 30"
+          -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/verification/north-sea-drive-energy.yaml
+          -DOUT=${CMAKE_BINARY_DIR}/test-output/long_north_sea_drive_energy
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/run_verification_case.cmake)
+set_tests_properties(long_north_sea_drive_energy PROPERTIES LABELS long TIMEOUT 7200)

@@ -374,3 +374,47 @@ TEST(StageDriver, ABlowSettlesOnceItsWaveHasPassed) {
     EXPECT_GT(settled, 0);
     EXPECT_GT(before, 0);
 }
+
+// A pile bouncing on the soil passes through zero speed at the top of every bounce: here
+// it dwells below rest_speed for 0.4 ms of every 2 ms until 10 ms, then rests. The blow
+// must end once it has been slow for rest_span (1 ms) on end, after the bouncing; taken at
+// rest at the first dwell (rest_span 0) it would end at 2 ms, the bounce still to come
+// (the loose-sand case's sets then alternated, some negative).
+TEST(StageDriver, ABlowIsNotAtRestAtTheTopOfABounce) {
+    class BouncingBody final : public CoupledBody<2> {
+    public:
+        double t = 0.0;
+        int stage = 0;
+        double stable_time_step(const mpm::MpmModel<2>&, double soil_dt) const override { return soil_dt; }
+        void before_step(mpm::MpmModel<2>&, int s, bool, double, double time_in_stage) override {
+            t = time_in_stage, stage = s;
+        }
+        void come_to_rest() override {}
+        void set_gravity_factor(double) override {}
+        double max_speed() const override { return t < 0.01 && std::fmod(t, 0.002) > 0.0004 ? 0.1 : 0.0; }
+        double toe_elevation() const override { return 1.0; }
+        std::vector<std::pair<std::string, std::vector<double>>> state() const override { return {}; }
+        void restore(const std::vector<std::pair<std::string, std::vector<double>>>&) override {}
+    };
+    auto blow_end = [](double rest_span) {
+        auto m = block();
+        StageSpec b = dynamic("blow", 0.02);
+        b.blow = true;
+        b.rest_speed = 1e-3;
+        b.min_duration = 0.0015;
+        b.rest_span = rest_span;
+        const std::vector<StageSpec> stages{b, dynamic("after", 0.001)};
+        BouncingBody body;
+        StageDriver<2> d(m, stages, {}, {});
+        d.couple(&body);
+        d.run();
+        double end = 0.0;
+        for (std::size_t i = 0; i < d.history().data[2].size(); ++i)
+            if (d.history().data[2][i] == 1.0) end = d.history().data[0][i];
+        return end;
+    };
+    const double end = blow_end(0.001), end_at_first_dwell = blow_end(0.0);
+    EXPECT_GE(end, 0.011);
+    EXPECT_LT(end, 0.0125);
+    EXPECT_LT(end_at_first_dwell, 0.003);
+}
