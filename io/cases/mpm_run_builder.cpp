@@ -1,6 +1,7 @@
 #include "io/cases/mpm_run_builder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -17,27 +18,55 @@ namespace pilempm::io {
 namespace {
 
 // A pile wished in place: a point of the shaft whose domain the wall cuts gives way to the
-// parts of it either side of the steel, each a point whose domain ends on the wall's face
-// (mass and volume in proportion), so the soil starts touching the wall inside and out.
-// Without it the points beside a wall thinner than a cell stand up to half a point's width
-// off it and the shaft carries nothing until the soil has moved that far. Slivers under a
-// tenth of the domain's width are dropped.
+// parts of it either side of the steel, each ending on the wall's face (mass and volume in
+// proportion), so the soil starts touching the wall inside and out. Without it the points
+// beside a wall thinner than a cell stand up to half a point's width off it and the shaft
+// carries nothing until the soil has moved that far. A part thinner than half the point
+// joins the point beyond it (that point's domain then reaches the face): a sliver would
+// set the contact's stable step (its penalty spring against its own mass, omega = c_p /
+// thickness), 6e-6 s instead of 2.2e-5 s for the North Sea monopile on cells of 0.125 m.
+// A part with no such neighbour stands alone, or under a tenth of the domain is dropped.
 template <int D>
 void split_at_the_wall(mpm::Particles<D>& p, std::vector<char>& keep, const fem::PileGeometry& g, double toe,
                        double cone, bool axisymmetric) {
     const std::size_t count = p.size();
-    for (std::size_t i = 0; i < count; ++i) {
-        const double hr = 0.5 * p.domain0[D * D * i], hz = 0.5 * p.domain0[D * D * i + D * (D - 1) + D - 1];
-        const double r = p.x[D * i], z = p.x[D * i + D - 1] - toe;
+    auto half_r = [&](std::size_t i) { return 0.5 * p.domain0[D * D * i]; };
+    auto half_z = [&](std::size_t i) { return 0.5 * p.domain0[D * D * i + D * (D - 1) + D - 1]; };
+    auto cut = [&](std::size_t i) {
+        const double hr = half_r(i), hz = half_z(i), r = p.x[D * i], z = p.x[D * i + D - 1] - toe;
         const double touch = 1e-9 * hz;
-        if (z - hz < cone - touch || z + hz > g.length() + touch) continue;  // the shaft's points only (not a cone's)
-        const double ri = g.inner_radius_at(z), ro = g.outer_radius_at(z);
-        if (r + hr <= ri || r - hr >= ro) continue;
+        if (z - hz < cone - touch || z + hz > g.length() + touch) return false;  // the shaft's points only (not a cone's)
+        return !(r + hr <= g.inner_radius_at(z) || r - hr >= g.outer_radius_at(z));
+    };
+    // The points by the edges of their domains in r at their height (nm), to find the one
+    // beyond a part.
+    using Key = std::pair<long long, long long>;
+    auto key = [](double r, double z) { return Key{std::llround(r * 1e9), std::llround(z * 1e9)}; };
+    std::map<Key, std::size_t> by_left_edge, by_right_edge;
+    for (std::size_t i = 0; i < count; ++i) {
+        by_left_edge[key(p.x[D * i] - half_r(i), p.x[D * i + D - 1])] = i;
+        by_right_edge[key(p.x[D * i] + half_r(i), p.x[D * i + D - 1])] = i;
+    }
+    std::vector<std::pair<std::size_t, std::array<double, 2>>> joins;  // neighbour, the part's [r0, r1]
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!cut(i)) continue;
         keep[i] = 0;
+        const double hr = half_r(i), r = p.x[D * i], z = p.x[D * i + D - 1] - toe;
+        const double ri = g.inner_radius_at(z), ro = g.outer_radius_at(z);
         const double pieces[2][2] = {{r - hr, std::min(ri, r + hr)}, {std::max(ro, r - hr), r + hr}};
-        for (const auto& piece : pieces) {
+        for (int side = 0; side < 2; ++side) {
+            const double* piece = pieces[side];
             const double width = piece[1] - piece[0];
-            if (width < 0.2 * hr) continue;
+            if (width <= 0.0) continue;
+            if (width < hr) {
+                const auto& edges = side == 0 ? by_right_edge : by_left_edge;
+                const auto it = edges.find(key(side == 0 ? r - hr : r + hr, p.x[D * i + D - 1]));
+                if (it != edges.end() && !cut(it->second) && half_z(it->second) == half_z(i)) {
+                    joins.push_back({it->second, {piece[0], piece[1]}});
+                    continue;
+                }
+                if (width < 0.2 * hr) continue;
+            }
             double x[D], len[D];
             for (int d = 0; d < D; ++d) x[d] = p.x[D * i + d], len[d] = p.domain0[D * D * i + D * d + d];
             x[0] = 0.5 * (piece[0] + piece[1]);
@@ -47,6 +76,18 @@ void split_at_the_wall(mpm::Particles<D>& p, std::vector<char>& keep, const fem:
             p.porosity.back() = p.porosity[i];
             keep.push_back(1);
         }
+    }
+    // Per radian a ring's volume is its mid-radius times its width, so the joined point at
+    // its new middle holds both masses exactly.
+    for (const auto& [j, piece] : joins) {
+        const double hr = half_r(j), r = p.x[D * j];
+        const double lo = std::min(r - hr, piece[0]), hi = std::max(r + hr, piece[1]);
+        const double mid = 0.5 * (lo + hi), grown = (hi - lo) / (2.0 * hr) * (axisymmetric ? mid / r : 1.0);
+        p.mass[j] *= grown;
+        p.volume[j] *= grown;
+        p.volume0[j] *= grown;
+        p.x[D * j] = mid;
+        p.domain0[D * D * j] = hi - lo;
     }
 }
 
@@ -61,7 +102,6 @@ std::string metres(double x) {
 // The shortest a blow runs before the pile counts as at rest: the given one, else the
 // hammer's pulse (a ram-cushion's: none, its ram rides the head) and four of the wave's
 // transits of the pile, so a blow does not end between two of its reflections.
-
 double blow_min_duration(const MpmCase& c, const MpmStageInput& st) {
     if (st.min_duration >= 0.0) return st.min_duration;
     const fem::HammerSpec& h = c.pile.hammer.hammer;

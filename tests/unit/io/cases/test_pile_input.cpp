@@ -58,27 +58,31 @@ TEST(PileInput, APileStartingInTheSoilMustBeWishedInPlace) {
         EXPECT_FALSE(r >= 0.18 && r <= 0.2 && z >= 5.0 && z <= 6.0) << "a point left in the wall at " << r << ", " << z;
     }
     // A wall through the points' centres (r 0.17 to 0.18): the column at r = 0.175 (domains
-    // 0.15 to 0.2) gives way to a column either side whose domains end on the wall's faces,
-    // and the soil's mass is the region's less the steel's volume (per radian, exact for the
-    // midpoint rule in r): nothing lost, nothing left in the steel.
+    // 0.15 to 0.2) is cut into parts 2 cm wide either side, thinner than half a point: each
+    // joins the column beyond it (0.10-0.15 and 0.20-0.25), whose domains then end on the
+    // wall's faces (0.10-0.17, 0.18-0.25), and the soil's mass is the region's less the
+    // steel's volume (per radian, exact for the midpoint rule in r): nothing lost, nothing
+    // left in the steel, no sliver.
     const std::string thick = replaced(replaced(embedded, "  friction: 0.4", "  wished_in_place: true\n  friction: 0.4"),
                                        "outer_diameter: 0.4, wall_thickness: 0.02", "outer_diameter: 0.36, wall_thickness: 0.01");
     const fs::path thick_file = write(thick, "thick");
     const auto cut = pio::build_mpm_run<2>(pio::read_mpm_case(thick_file.string()));
     fs::remove(thick_file);
     const auto& q = cut.model.particles;
-    EXPECT_EQ(q.size(), p.size() + 20u);  // 1 m below the surface, points 5 cm apart
+    EXPECT_EQ(q.size() + 20u, p.size());  // 1 m below the surface, points 5 cm apart
     double mass = 0.0;
     int inside = 0, outside = 0;
     for (std::size_t i = 0; i < q.size(); ++i) {
         mass += q.mass[i];
         const double r = q.x[2 * i], z = q.x[2 * i + 1], half = 0.5 * q.domain0[4 * i];
-        if (z < 5.0 || z > 6.0 || r < 0.14 || r > 0.21) continue;
+        if (z < 5.0 || z > 6.0 || r < 0.13 || r > 0.22) continue;
         if (r < 0.17) {
             EXPECT_NEAR(r + half, 0.17, 1e-12) << "inside the wall at z = " << z;
+            EXPECT_NEAR(2.0 * half, 0.07, 1e-12) << "inside the wall at z = " << z;
             ++inside;
         } else {
             EXPECT_NEAR(r - half, 0.18, 1e-12) << "outside the wall at z = " << z;
+            EXPECT_NEAR(2.0 * half, 0.07, 1e-12) << "outside the wall at z = " << z;
             ++outside;
         }
     }
