@@ -147,6 +147,14 @@ void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, 
     soil.step(dt);
 }
 
+double CoupledPile::weight_work() const {
+    const auto& mass = pile_.operators().lumped_mass;
+    const auto& u = pile_.displacement();
+    double down = 0.0;  // sum of m u_z, settlement positive
+    for (int i = 0; i < pile_.mesh().num_nodes(); ++i) down -= mass[2 * i + 1] * u[2 * i + 1];
+    return down * gravity_ * gravity_factor_;
+}
+
 // A pause holds the contact forces while the soil consolidates under them: the pile moves
 // with the soil it bears on (the mean settlement of the points it pushes, weighted by the
 // vertical force on each), so that the next blow's first contact finds the gaps the forces

@@ -98,6 +98,9 @@ public:
     // energy it has put through the head, a PDA's ENTHRU; 0 outside blows.
     double enthru() const { return enthru_; }
     double head_settlement() const { return -pile_.head_displacement(); }  // m, down positive
+    // The work of the pile's weight (at the present gravity factor) since it was placed: its
+    // mass times g times its centre of mass's settlement, J (the blow's energy ledger).
+    double weight_work() const;
     // The pile's momentum (the whole ring; velocities at the last half step), N s.
     std::array<double, 2> momentum() const;
     // Damping ratio of the pile at omega = 1 / dt in an undamped stage (coupled_pile.cpp).

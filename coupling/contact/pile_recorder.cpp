@@ -50,7 +50,8 @@ void PileRecorder::add_columns(std::vector<std::string>& columns) const {
     for (const char* c : {"pile_head_settlement_m", "pile_head_force_N", "outer_shaft_resistance_N",
                           "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
                           "max_penetration_over_cell", "pile_toe_elevation_m", "pile_head_velocity_m_s", "enthru_J",
-                          "pile_max_compression_Pa", "pile_max_tension_Pa", "toe_pore_pressure_Pa", "plug_length_m", "pile_energy_J"})
+                          "pile_max_compression_Pa", "pile_max_tension_Pa", "toe_pore_pressure_Pa", "plug_length_m", "pile_energy_J",
+                          "pile_weight_work_J"})
         columns.push_back(c);
 }
 
@@ -81,6 +82,7 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     row.push_back(soil.pore_pressure);
     row.push_back(soil.plug_length);
     row.push_back(pile_.pile().strain_energy() + pile_.pile().kinetic_energy(pile_.pile().velocity()));
+    row.push_back(pile_.weight_work());
 }
 
 }  // namespace pilempm::coupling

@@ -208,16 +208,25 @@ std::vector<VerificationCheck> hammer_energy_every_blow(const MpmCheckContext& c
     double worst = reference;
     for (const auto& [stage, work] : per_stage)
         if (std::abs(work - reference) > std::abs(worst - reference)) worst = work;
-    // The ledger: the pile can hold no more than the hammer put in (the soil gives back at
-    // most what it took), whatever it does after the pulse; a pile fed by the time stepping
-    // rings up past it (it did, before the contact followed the pile's substeps).
+    // The ledger: the pile can hold no more than the hammer and its weight put in since the
+    // blow began (the soil gives back at most what it took), whatever it does after the
+    // pulse; a pile fed by the time stepping rings up past it (it did, before the contact
+    // followed the pile's substeps). The weight's work: a 11.4 MN monopile setting 6 mm adds
+    // 4 % to a blow's 1.5 MJ.
     const auto& pile_energy = column(history, "pile_energy_J");
+    const auto& weight = column(history, "pile_weight_work_J");
+    std::map<double, double> weight_at_start;  // the blow's stage, its weight work the row before
     double most = 0.0, of = 1.0;
-    for (std::size_t i = 0; i < st.size(); ++i)
-        if (per_stage.count(st[i]) && pile_energy[i] / per_stage[st[i]] > most / of) most = pile_energy[i], of = per_stage[st[i]];
+    for (std::size_t i = 0; i < st.size(); ++i) {
+        if (!per_stage.count(st[i])) continue;
+        if (!weight_at_start.count(st[i])) weight_at_start[st[i]] = weight[i > 0 ? i - 1 : i];
+        const double in = per_stage[st[i]] + weight[i] - weight_at_start[st[i]];
+        if (pile_energy[i] / in > most / of) most = pile_energy[i], of = in;
+    }
     // 1 % for the head plate's share of the strain energy that f_int, a substep old, misses.
     VerificationCheck ledger = make_check("blow_energy_not_in_pile_least", 1.0 - most / of, -0.01, 0.0, false,
-                                          "1 - the pile's largest strain + kinetic energy in a blow over its ENTHRU: "
+                                          "1 - the pile's largest strain + kinetic energy in a blow over its ENTHRU and its "
+                                          "weight's work since the blow began: "
                                           "at least -1 %");
     ledger.at_least = true;
     ledger.passed = std::isfinite(ledger.computed) && ledger.computed >= ledger.reference;

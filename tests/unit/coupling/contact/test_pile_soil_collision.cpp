@@ -192,3 +192,27 @@ TEST(PileContactSurface, InAPauseThePileFollowsTheSoilItBearsOn) {
     coupled.follow_soil(m, before);
     EXPECT_NEAR(coupled.toe_elevation(), toe - settlement, 1e-12);
 }
+
+// The weight's work (the blow's energy ledger credits it): a pile falling freely for t has
+// had m g (g t^2 / 2) done on it, all of it kinetic energy, at either gravity factor.
+TEST(PileContactSurface, TheWeightsWorkOnAFallingPileIsItsKineticEnergy) {
+    const double h = 0.05, g = 9.81;
+    for (const double factor : {1.0, 0.5}) {
+        fem::ExplicitPile pile(tube_mesh(h / 6.0), bar_material(), {});
+        mpm::MpmModel<2> m = striker(h, 0.0);
+        mpm::MpmSolver<2> soil(m);
+        ContactSettings settings;
+        settings.ring = full_ring(1.0);
+        CoupledPile coupled(pile, settings, PileFrame{kLength + 1.0}, g, false);  // 1 m above the soil
+        coupled.set_gravity_factor(factor);
+        const double dt = coupled.stable_time_step(m, soil.stable_time_step());
+        const int steps = static_cast<int>(std::ceil(0.05 / dt));
+        for (int n = 0; n < steps; ++n) coupled.advance(m, dt);
+        double mass = 0.0;
+        for (std::size_t k = 1; k < pile.operators().lumped_mass.size(); k += 2) mass += pile.operators().lumped_mass[k];
+        const double t = steps * dt, a = factor * g;
+        EXPECT_NEAR(coupled.weight_work() / (mass * a * 0.5 * a * t * t), 1.0, 0.01);  // leapfrog: O(1 / steps)
+        // v at the half step before t against u at t: within a step's share as well.
+        EXPECT_NEAR(pile.kinetic_energy(pile.velocity()) / coupled.weight_work(), 1.0, 0.01);
+    }
+}
