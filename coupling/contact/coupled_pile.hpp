@@ -80,6 +80,8 @@ public:
     }
     double max_speed() const override;
     double toe_elevation() const override { return frame_.toe_elevation + pile_.toe_displacement(); }
+    // |soil's axial force + weight + head load| over weight + |head load|, of the last step.
+    double unbalanced_force_ratio() const override;
     void set_gravity_factor(double factor) override { gravity_factor_ = factor; }
     void set_settling(double alpha) override { settling_ = alpha; }
     void follow_soil(const mpm::MpmModel<2>& m, const std::vector<double>& x_before) override;

@@ -25,6 +25,9 @@ public:
     // blow has died out, and how far the body has gone.
     virtual double max_speed() const = 0;
     virtual double toe_elevation() const = 0;
+    // Its out-of-balance force over the forces it carries (a quasi-static stage ends when
+    // this and the soil's are both below its tolerance; 0: in balance whatever it does).
+    virtual double unbalanced_force_ratio() const { return 0.0; }
     // A blow settling (StageSpec::settle_damping): the body damps its own motion, rigid
     // motion too, with Cundall's local damping alpha (0: not settling).
     virtual void set_settling(double /*alpha*/) {}

@@ -108,10 +108,10 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
         state_.stage_steps = n + 1;
         last_recorded = n % settings_.quasi_static_record_every == 0;
         if (last_recorded) record();
-        if (n >= 100 && solver_.unbalanced_force_ratio() < st.tolerance) break;
+        if (n >= 100 && unbalanced_force_ratio() < st.tolerance) break;
         if (periodic_checkpoint_and_stop(stop)) {
             report.steps = n;
-            report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+            report.unbalanced_ratio = unbalanced_force_ratio();
             report.stopped = true;
             observer_->stage_end(state_.stage, st, report);
             return false;
@@ -126,7 +126,7 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
     solver_.set_time(state_.stage_start_time, solver_.steps());
     if (!last_recorded) record();  // the stage's final state is in the history (a blow's set starts there)
     report.steps = n;
-    report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+    report.unbalanced_ratio = unbalanced_force_ratio();
     report.in_equilibrium = report.unbalanced_ratio < st.tolerance;
     observer_->stage_end(state_.stage, st, report);
     return true;

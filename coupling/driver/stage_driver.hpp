@@ -5,6 +5,7 @@
 // step to the next is in DriverState, the solver's clock and the history, so a run resumed
 // from a checkpoint continues exactly as if it had never stopped. Output goes through a
 // StageObserver (VTK, checkpoint files, progress): the driver itself writes nothing.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -105,6 +106,10 @@ private:
     int end_stage(const StageSpec& st);
     bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop);
     double step_size() const;
+    // The soil's unbalanced force ratio, or the body's where larger (a quasi-static stage's end).
+    double unbalanced_force_ratio() const {
+        return std::max(solver_.unbalanced_force_ratio(), body_ ? body_->unbalanced_force_ratio() : 0.0);
+    }
     void step(double dt, bool quasi_static);
 
     mpm::MpmModel<D>& m_;

@@ -128,7 +128,7 @@ double ExplicitPile::damped_stable_time_step() const {
     // Central differences with damping beta K: omega dt <= 2 (sqrt(1 + xi^2) - xi), xi = beta omega / 2.
     // Local damping adds up to alpha |f| to a force that brakes the motion: the stiffness
     // seen is (1 + alpha) K at worst.
-    const double omega = 2.0 / ops_.stable_time_step * std::sqrt(1.0 + local_damping_);
+    const double omega = 2.0 / ops_.stable_time_step * std::sqrt(1.0 + std::max(local_damping_, rigid_damping_));
     const double xi = 0.5 * stiffness_damping_ * omega;
     return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi);
 }
@@ -195,14 +195,18 @@ void ExplicitPile::advance_velocity(double dt) {
     toe_reaction_ = support_reaction(c);
     // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
     // loop over all DOFs; the fixed ones are put back to rest after it.
-    if (local_damping_ > 0.0)
+    if (rigid_damping_ > 0.0) {
+        damping_scratch_.resize(n);
+        advance_velocity_split_damping(c);
+    } else if (local_damping_ > 0.0) {
         for (int i = 0; i < n; ++i) {
             const double f = f_ext_[i] - f_int_[i];
             const double against = v_[i] > 0.0 ? -local_damping_ * std::abs(f) : v_[i] < 0.0 ? local_damping_ * std::abs(f) : 0.0;
             v_[i] = (c.keep[i] * v_[i] + f + against) / c.scale[i];
         }
-    else
+    } else {
         for (int i = 0; i < n; ++i) v_[i] = (c.keep[i] * v_[i] + (f_ext_[i] - f_int_[i])) / c.scale[i];
+    }
     if (vibration_damping_ > 0.0) damp_vibration(dt);
     for (int i : reaction_dofs_)
         if (fixed_[i]) v_[i] = 0.0;
@@ -210,6 +214,31 @@ void ExplicitPile::advance_velocity(double dt) {
     double p = 0.0;
     for (int d : head_dofs_) p += m[d] * v_[d];
     for (int d : head_dofs_) v_[d] = p / head_mass_;
+}
+
+// Cundall's damping of the rigid axial motion and, zero-sum, of the vibration about it.
+void ExplicitPile::advance_velocity_split_damping(const VelocityUpdate& c) {
+    const int n = mesh_.num_dofs(), dim = mesh_.dim;
+    const auto& m = ops_.lumped_mass;
+    double resultant = 0.0, p = 0.0, mass = 0.0;
+    for (int i = dim - 1; i < n; i += dim)
+        if (!fixed_[i]) resultant += f_ext_[i] - f_int_[i], p += m[i] * v_[i], mass += m[i];
+    if (mass == 0.0) return;
+    const double mean = p / mass, per_mass = resultant / mass;
+    auto sign = [](double x) { return x > 0.0 ? 1.0 : x < 0.0 ? -1.0 : 0.0; };
+    double vibration_sum = 0.0;  // of the axial DOFs' vibration damping, to be taken out
+    for (int i = 0; i < n; ++i) {
+        const bool axial = i % dim == dim - 1 && !fixed_[i];
+        const double f = f_ext_[i] - f_int_[i] - (axial ? m[i] * per_mass : 0.0);
+        damping_scratch_[i] = -rigid_damping_ * std::abs(f) * sign(v_[i] - (axial ? mean : 0.0));
+        if (axial) vibration_sum += damping_scratch_[i];
+    }
+    const double rigid = -rigid_damping_ * std::abs(resultant) * sign(mean);
+    for (int i = 0; i < n; ++i) {
+        const bool axial = i % dim == dim - 1 && !fixed_[i];
+        const double d = damping_scratch_[i] + (axial ? m[i] / mass * (rigid - vibration_sum) : 0.0);
+        v_[i] = (c.keep[i] * v_[i] + f_ext_[i] - f_int_[i] + d) / c.scale[i];
+    }
 }
 
 // v <- v_rigid + (v - v_rigid) exp(-c dt), v_rigid the mass-weighted mean axial velocity

@@ -194,3 +194,37 @@ TEST(PileRun, AJackedPileIsResistedByTheSoilAloneWhileItMoves) {
     EXPECT_NEAR(jack / soil, 1.0, 5e-3);
     fs::remove_all(dir);
 }
+
+// A solid pile set on the soil and left free in a nil step (quasi-static, local damping 0.7)
+// comes to rest on it: the stage ends in equilibrium, soil and pile both (tolerance 1e-5),
+// the base carrying the weight within 1e-4. Cundall's damping on each of the pile's DOFs
+// held it 0.3-0.4 % out of balance through its vibration's noise (the soil's balance alone
+// ended the stage there).
+TEST(PileRun, AFreePileComesToRestOnTheSoilInANilStep) {
+    const fs::path dir = fresh_dir("free");
+    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
+    const auto stages = yaml.find("stages:");
+    yaml.replace(stages, yaml.find("output:") - stages,
+                 "stages:\n  - {name: nil, type: quasi_static, max_steps: 20000, tolerance: 1.0e-5, local_damping: 0.7}\n");
+    auto h = run_text(dir, yaml);
+    EXPECT_LT(h["step"].back(), 20000.0);  // in equilibrium before max_steps
+    EXPECT_NEAR(h["base_resistance_N"].back() / kSolidWeight, 1.0, 1e-4);
+    fs::remove_all(dir);
+}
+
+// The North Sea monopile's nil step (the shipped case, its drive left out): the 77 m pile,
+// released 4.7 m deep in two-phase soil on 0.5 m cells, comes to rest on the soil. Its
+// vibration on the contact kept the soil's unbalanced force at 0.18 of its load after the
+// 20 000 steps until the pile's vibration took the stage's local damping too (now 0.003);
+// the soil carries the pile's weight within 0.5 % (measured 0.07 %).
+TEST(PileRun, TheNorthSeaMonopileComesToRestInItsNilStep) {
+    const fs::path dir = fresh_dir("north-sea-nil");
+    std::string yaml = case_text::shipped("cases/driving/north-sea-monopile.yaml");
+    const auto drive = yaml.find("  - name: drive");
+    yaml.replace(drive, yaml.find("output:") - drive, "");
+    auto h = run_text(dir, yaml);
+    const double weight = 7850.0 * 9.81 * std::numbers::pi * (3.9 * 3.9 - 3.83 * 3.83) * 77.4;
+    EXPECT_LT(h["unbalanced_force_ratio"].back(), 0.01);
+    EXPECT_NEAR(soil_resistance(h) / weight, 1.0, 5e-3);
+    fs::remove_all(dir);
+}
