@@ -95,6 +95,13 @@ const double kSolidWeight = 7850.0 * 9.81 * std::numbers::pi * 0.2 * 0.2 * 0.6;
 
 const char* kTinyCase = "cases/jacking/jacked-open-pile-tiny.yaml";
 
+// The tiny case with a solid steel cylinder (D = 0.4 m) for its pile and `stages` for its own.
+std::string solid_pile_case(const std::string& stages) {
+    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
+    const auto at = yaml.find("stages:");
+    return yaml.replace(at, yaml.find("output:") - at, "stages:\n" + stages);
+}
+
 }  // namespace
 
 TEST(PileRun, AWishedInPlacePileAtRestFeelsK0OnItsShaft) {
@@ -130,11 +137,8 @@ TEST(PileRun, AMaintainedLoadIsCarriedByTheSoil) {
 TEST(PileRun, AClosedEndedPileUnderALoadIsCarriedByTheSoil) {
     const fs::path dir = fresh_dir("solid");
     // A solid steel cylinder (D = 0.4 m) on the surface, pushed by 20 kN: a rigid punch.
-    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
-    const auto stages = yaml.find("stages:");
-    yaml.replace(stages, yaml.find("output:") - stages,
-                 "stages:\n  - {name: load, type: quasi_static, max_steps: 4000, tolerance: 1.0e-5, pile: {force: 20.0e3}}\n");
-    auto h = run_text(dir, yaml);
+    auto h = run_text(dir, solid_pile_case("  - {name: load, type: quasi_static, max_steps: 4000, tolerance: 1.0e-5, "
+                                           "pile: {force: 20.0e3}}\n"));
     EXPECT_NEAR(h["base_resistance_N"].back() / (20.0e3 + kSolidWeight), 1.0, 5e-3);  // all of it on the base
     EXPECT_LT(std::abs(h["inner_shaft_resistance_N"].back()), 1e-9);
     double deepest = 0.0;
@@ -147,12 +151,8 @@ TEST(PileRun, AClosedEndedPileUnderALoadIsCarriedByTheSoil) {
 // carries the load and three times the pile's weight, the soil having settled under 3 g.
 TEST(PileRun, AStagesGravityFactorScalesThePilesWeight) {
     const fs::path dir = fresh_dir("ng");
-    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
-    const auto stages = yaml.find("stages:");
-    yaml.replace(stages, yaml.find("output:") - stages,
-                 "stages:\n  - {name: load, type: quasi_static, max_steps: 6000, tolerance: 1.0e-5, gravity_factor: 3.0,"
-                 " pile: {force: 20.0e3}}\n");
-    auto h = run_text(dir, yaml);
+    auto h = run_text(dir, solid_pile_case("  - {name: load, type: quasi_static, max_steps: 6000, tolerance: 1.0e-5, "
+                                           "gravity_factor: 3.0, pile: {force: 20.0e3}}\n"));
     EXPECT_NEAR(h["base_resistance_N"].back() / (20.0e3 + 3.0 * kSolidWeight), 1.0, 5e-3);
     fs::remove_all(dir);
 }
@@ -202,11 +202,8 @@ TEST(PileRun, AJackedPileIsResistedByTheSoilAloneWhileItMoves) {
 // ended the stage there).
 TEST(PileRun, AFreePileComesToRestOnTheSoilInANilStep) {
     const fs::path dir = fresh_dir("free");
-    std::string yaml = case_text::replaced(case_text::shipped(kTinyCase), "wall_thickness: 0.02", "wall_thickness: 0.2");
-    const auto stages = yaml.find("stages:");
-    yaml.replace(stages, yaml.find("output:") - stages,
-                 "stages:\n  - {name: nil, type: quasi_static, max_steps: 20000, tolerance: 1.0e-5, local_damping: 0.7}\n");
-    auto h = run_text(dir, yaml);
+    auto h = run_text(dir, solid_pile_case("  - {name: nil, type: quasi_static, max_steps: 20000, tolerance: 1.0e-5, "
+                                           "local_damping: 0.7}\n"));
     EXPECT_LT(h["step"].back(), 20000.0);  // in equilibrium before max_steps
     EXPECT_NEAR(h["base_resistance_N"].back() / kSolidWeight, 1.0, 1e-4);
     fs::remove_all(dir);
