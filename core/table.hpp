@@ -24,6 +24,12 @@ struct Table {
         for (double v : row) data[c++].push_back(v);
     }
     std::size_t rows() const { return data.empty() ? 0 : data.front().size(); }
+    // The column named `column_name`; throws (naming the table) when it has none.
+    const std::vector<double>& column(const std::string& column_name) const {
+        for (std::size_t k = 0; k < columns.size(); ++k)
+            if (columns[k] == column_name) return data[k];
+        throw std::runtime_error("the " + name + " table has no column " + column_name);
+    }
 };
 
 }  // namespace pilempm

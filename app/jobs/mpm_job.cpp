@@ -12,6 +12,7 @@
 #include "coupling/contact/blow_table.hpp"
 #include "coupling/contact/coupled_pile.hpp"
 #include "coupling/contact/pile_recorder.hpp"
+#include "coupling/contact/unloading_point.hpp"
 #include "coupling/driver/stage_driver.hpp"
 #include "io/cases/mpm_case.hpp"
 #include "io/cases/mpm_run_builder.hpp"
@@ -100,6 +101,55 @@ void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
     coupled.pile().axial_stress(stress);
     io::write_results_h5(dir / "results.h5", {table, count, history}, placed_pile_mesh(run), coupled.pile().displacement(),
                          coupled.pile().velocity(), stress, {{"ground_elevation_m", ground}}, {{"title", c.title}});
+}
+
+// Each load test's record, load_test_<stage>.csv: a static test's load against the head's
+// settlement from the stage's start (the jack's force and the soil's resistance); a rapid
+// test's unloading-point analysis (its rows to the unloading point: load, F - m a and the
+// derived static force), F_u and C in summary.json. Nothing when the case has none.
+void write_load_tests(const io::MpmCase& c, const Table& history, const coupling::CoupledPile& coupled,
+                      const fs::path& dir, io::JsonObject& summary) {
+    std::vector<io::JsonObject> tests;
+    double mass = 0.0;  // the pile's, the whole ring
+    const auto& lumped = coupled.pile().operators().lumped_mass;
+    for (std::size_t k = 1; k < lumped.size(); k += 2) mass += lumped[k];
+    for (std::size_t k = 0; k < c.stages.size(); ++k) {
+        const auto& st = c.stages[k];
+        if (st.load_test.empty()) continue;
+        const int stage = static_cast<int>(k) + 1;
+        io::JsonObject entry;
+        entry.add("stage", st.name).add("type", st.load_test);
+        const coupling::RapidLoadRecord record = coupling::rapid_load_record(history, stage);
+        if (st.load_test == "static") {
+            Table curve("load_test", {"time_s", "settlement_m", "load_N", "soil_resistance_N"});
+            const auto& stages = mpm::column(history, "stage");
+            std::size_t row = 0;
+            for (std::size_t i = 0; i < stages.size(); ++i) {
+                if (stages[i] != stage) continue;
+                double soil = 0.0;
+                for (const char* side : {"outer_shaft_resistance_N", "inner_shaft_resistance_N", "base_resistance_N"})
+                    soil += mpm::column(history, side)[i];
+                curve.add_row({record.time[row], record.settlement[row], record.force[row], soil});
+                ++row;
+            }
+            io::write_csv(dir / ("load_test_" + st.name + ".csv"), curve);
+            double peak = 0.0;
+            for (double f : record.force) peak = std::max(peak, f);
+            entry.add("max_settlement_m", record.settlement.empty() ? 0.0 : record.settlement.back()).add("max_load_N", peak);
+        } else {
+            try {
+                const coupling::UnloadingPointResult u = coupling::unloading_point(record, mass);
+                io::write_csv(dir / ("load_test_" + st.name + ".csv"), u.curve);
+                entry.add("static_resistance_N", u.static_resistance).add("damping_N_s_m", u.damping)
+                    .add("max_settlement_m", u.max_settlement).add("unloading_time_s", u.unloading_time)
+                    .add("peak_load_N", u.peak_force).add("peak_velocity_m_s", u.peak_velocity).add("pile_mass_kg", mass);
+            } catch (const std::invalid_argument& e) {
+                entry.add("note", std::string(e.what()) + " (make the stage longer)");
+            }
+        }
+        tests.push_back(entry);
+    }
+    if (!tests.empty()) summary.add("load_tests", tests);
 }
 
 // What the checks read of the case: its parameters and the first material's constants.
@@ -368,6 +418,8 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                 std::printf("  [%s] %-40s computed %-14.6g reference %-14.6g tol %g\n", k.informative ? "note" : k.passed ? "pass" : "FAIL",
                             k.name.c_str(), k.computed, k.reference, k.tolerance);
     }
+    if constexpr (D == 2)
+        if (coupled) write_load_tests(c, history, *coupled, staged.path(), summary);
     io::write_json(staged.path() / "summary.json", summary);
     if (c.pile.present && c.plots) {
         std::string note;

@@ -9,11 +9,7 @@ namespace pilempm::coupling {
 
 namespace {
 
-const std::vector<double>& col(const Table& t, const std::string& name) {
-    for (std::size_t k = 0; k < t.columns.size(); ++k)
-        if (t.columns[k] == name) return t.data[k];
-    throw std::runtime_error("the " + t.name + " table has no column " + name);
-}
+const std::vector<double>& col(const Table& t, const std::string& name) { return t.column(name); }
 
 }  // namespace
 

@@ -131,8 +131,11 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         const mpm::ConstitutiveModel& material = *materials[p.material[i]];
         const double modulus = std::max(material.p_wave_modulus(),
                                         material.p_wave_modulus_at(&p.stress[6 * i], p.state.data() + p.state_stride * i));
+        auto thickness_along = [&](const double* dir) {
+            return 2.0 * (std::abs(half[0] * dir[0] + half[1] * dir[1]) + std::abs(half[2] * dir[0] + half[3] * dir[1]));
+        };
         auto stiffness = [&](const double* dir) {
-            const double thickness = 2.0 * (std::abs(half[0] * dir[0] + half[1] * dir[1]) + std::abs(half[2] * dir[0] + half[3] * dir[1]));
+            const double thickness = thickness_along(dir);
             return settings_.penalty_factor * modulus * p.volume[i] / (thickness * thickness);
         };
         const double margin = settings_.stability_margin;
@@ -226,7 +229,12 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
                             (p.v[2 * i + 1] - (1.0 - xi) * va[1] - xi * vb[1]) * t[1];
         const bool same_face = segment_[i] >= 0 && s.side[segment_[i]] == s.side[k];
         double ft = (same_face ? tangential_[i] : 0.0) - settings_.tangential_ratio * kn * vrel * dt;
-        const double cap = mu * fn;
+        // Coulomb on the effective normal force: the point pushes with the mixture's stress
+        // (the water's excess pressure p reaches the steel through it), the grains with
+        // fn - p A, A = V_p / h_n its face (Terzaghi; shaft friction under a rapid load grew
+        // with the pore pressure it raised).
+        const double pore = p.pore_pressure.empty() ? 0.0 : p.pore_pressure[i];
+        const double cap = mu * std::max(0.0, fn - share * pore * p.volume[i] / thickness_along(nrm));
         if (std::abs(ft) > cap) ft = std::copysign(cap, ft);  // slip, else stick
         tangential_[i] = ft;
         segment_[i] = k;

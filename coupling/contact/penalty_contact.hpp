@@ -1,8 +1,9 @@
 #pragma once
 // Penalty contact between material points (slave) and the segments of a master surface,
 // independent of the grid: the gap is from the point's domain to the segment, the normal
-// force -k_n g, the tangential force a penalty spring capped by Coulomb's mu f_n (stick or
-// slip, kept per point between steps). The forces are equal and opposite: each point's on
+// force -k_n g, the tangential force a penalty spring capped by Coulomb's mu f_n' (stick or
+// slip, kept per point between steps), f_n' the effective normal force: f_n less the point's
+// excess pore pressure over its face. The forces are equal and opposite: each point's on
 // its external force, the master's on the segment's two nodes by the projection's weights
 // (times `ring`: the master integrates the whole ring, the soil is per radian).
 #include <array>

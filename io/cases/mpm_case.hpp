@@ -78,6 +78,10 @@ struct MpmStageInput {
     double pile_force = 0.0;        // N, compression positive
     double pile_rise_time = 0.0;    // s over which the velocity or force changes from the last stage's
     bool pile_struck = false;       // the case's hammer strikes the head at the stage's start (a blow)
+    // The stage is a load test on the pile: "static" (the head driven), read off as a load-
+    // settlement curve; "rapid" (the hammer's slow pulse), read by the unloading-point
+    // method. Empty: none.
+    std::string load_test;
     int pile_line = 0;              // the stage's pile key, for errors found later
     double local_damping = 0.7;     // quasi-static (default 0.7); dynamic (default 0)
     double gravity_factor = 1.0;    // gravity over the case's in this stage (n g in a centrifuge)

@@ -258,6 +258,13 @@ MpmStageInput read_stage(MapReader m) {
             else if (s.pile_loaded)
                 s.pile_force = pm->number("force", {"a head force in N, compression positive", [](double) { return true; }});
             if (!s.pile_struck) s.pile_rise_time = pm->number_or("rise_time", 0.0, non_negative("a rise time in s"));
+            if (pm->has("load_test")) {
+                s.load_test = pm->choice("load_test", {"static", "rapid"});
+                if (s.load_test == "static" && !s.pile_driven)
+                    pm->fail("load_test", "static with the head driven (velocity: m/s, down positive)", "static");
+                if (s.load_test == "rapid" && !s.pile_struck)
+                    pm->fail("load_test", "rapid with blow: true (the hammer's pulse, a force_table)", "rapid");
+            }
             pm->finish();
         }
     m.finish();

@@ -80,6 +80,13 @@ function(pilempm_centrifuge_test name cells container sands models label)
 endfunction()
 pilempm_centrifuge_test(validate_centrifuge_huy2008 2 cut medium mohr_coulomb validation)
 pilempm_centrifuge_test(long_centrifuge_huy2008 4 full medium,loose mohr_coulomb,hypoplastic long)
+# Case 3 of issue 14 (seed 000 D): the rapid load test by the unloading-point method against
+# the static load test of the same model, at the seed's permeability and 100 times it and
+# drained; the trends of load_test_study.py --check (some 5 min on one thread): long.
+add_test(NAME long_rapid_load_test_study
+  COMMAND python3 ${PROJECT_SOURCE_DIR}/scripts/load_test_study.py --permeabilities 2e-5,2e-3
+          --check --threads 1 --pilempm $<TARGET_FILE:pilempm> --out ${CMAKE_BINARY_DIR}/test-output/long_rapid_load_test_study)
+set_tests_properties(long_rapid_load_test_study PROPERTIES LABELS long TIMEOUT 7200)
 # Full-size runs (label long, not in CI: ctest --test-dir build -L long).
 # Granular column collapse, Mohr-Coulomb: the final height against Lube et al. on grid
 # sequences of three (11-17 min each on one core).

@@ -247,6 +247,23 @@ TEST(PileInput, ABlowNeedsAHammerAndADynamicStage) {
     EXPECT_NE(settled.find("dynamic"), std::string::npos) << settled;
 }
 
+// A load test names its kind: a static one drives the head, a rapid one is the hammer's pulse.
+TEST(PileInput, ALoadTestIsStaticOnADrivenHeadOrRapidOnABlow) {
+    const std::string hammer = "hammer: {type: half_sine, peak_force: 2.0e6, impulse_time: 0.001}\nstages:";
+    const std::string held = "pile: {velocity: 0.0, rise_time: 0.05}";
+    const std::string base = replaced(jacking(), "stages:", hammer);
+    const fs::path file = write(replaced(base, held, "pile: {velocity: 0.01, load_test: static}"), "slt");
+    EXPECT_EQ(pio::read_mpm_case(file.string()).stages.back().load_test, "static");
+    fs::remove(file);
+    const auto rapid_on_push = error_of(replaced(base, held, "pile: {velocity: 0.01, load_test: rapid}"), "rlt_push");
+    EXPECT_NE(rapid_on_push.find("stages[1].pile.load_test"), std::string::npos) << rapid_on_push;
+    EXPECT_NE(rapid_on_push.find("blow: true"), std::string::npos) << rapid_on_push;
+    const auto static_on_blow = error_of(replaced(base, held, "pile: {blow: true, load_test: static}"), "slt_blow");
+    EXPECT_NE(static_on_blow.find("velocity"), std::string::npos) << static_on_blow;
+    const auto unknown = error_of(replaced(base, held, "pile: {blow: true, load_test: quick}"), "lt_unknown");
+    EXPECT_NE(unknown.find("rapid"), std::string::npos) << unknown;
+}
+
 // A driving stage becomes a blow and a pause per blow, named and numbered, each blow struck
 // by the case's hammer and ending once the pile is at rest (after the pulse and four wave
 // transits by default), each pause the rest of the interval as a consolidation; without
