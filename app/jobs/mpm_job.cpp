@@ -138,7 +138,9 @@ void write_load_tests(const io::MpmCase& c, const Table& history, const coupling
             entry.add("max_settlement_m", record.settlement.empty() ? 0.0 : record.settlement.back()).add("max_load_N", peak);
         } else {
             try {
-                const coupling::UnloadingPointResult u = coupling::unloading_point(record, mass);
+                const auto& mesh = coupled.pile().mesh();
+                const double period = 2.0 * mesh.z(mesh.head_nodes.front()) / coupled.pile().steel().wave_speed();
+                const coupling::UnloadingPointResult u = coupling::unloading_point(record, mass, period);
                 io::write_csv(dir / ("load_test_" + st.name + ".csv"), u.curve);
                 entry.add("static_resistance_N", u.static_resistance).add("damping_N_s_m", u.damping)
                     .add("max_settlement_m", u.max_settlement).add("unloading_time_s", u.unloading_time)

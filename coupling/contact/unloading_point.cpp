@@ -10,24 +10,34 @@ namespace {
 
 const std::vector<double>& col(const Table& t, const std::string& name) { return t.column(name); }
 
-// dv/dt by central differences on a record whose steps may differ (one-sided at the ends).
-std::vector<double> acceleration(const std::vector<double>& t, const std::vector<double>& v) {
+// dv/dt by central differences over `window` (s) at least, v read linearly between rows
+// (one-sided at the record's ends): the pile's ringing averaged out over its wave period.
+std::vector<double> acceleration(const std::vector<double>& t, const std::vector<double>& v, double window) {
     const std::size_t n = t.size();
+    auto v_at = [&](double time) {
+        if (time <= t.front()) return v.front();
+        if (time >= t.back()) return v.back();
+        const std::size_t k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), time) - t.begin());
+        const double w = (time - t[k - 1]) / (t[k] - t[k - 1]);
+        return v[k - 1] + w * (v[k] - v[k - 1]);
+    };
     std::vector<double> a(n, 0.0);
-    if (n < 2) return a;
-    a.front() = (v[1] - v[0]) / (t[1] - t[0]);
-    a.back() = (v[n - 1] - v[n - 2]) / (t[n - 1] - t[n - 2]);
-    for (std::size_t i = 1; i + 1 < n; ++i) a[i] = (v[i + 1] - v[i - 1]) / (t[i + 1] - t[i - 1]);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double before = i > 0 ? t[i - 1] : t[i], after = i + 1 < n ? t[i + 1] : t[i];
+        const double lo = std::max(t.front(), std::min(before, t[i] - 0.5 * window));
+        const double hi = std::min(t.back(), std::max(after, t[i] + 0.5 * window));
+        a[i] = hi > lo ? (v_at(hi) - v_at(lo)) / (hi - lo) : 0.0;
+    }
     return a;
 }
 
 }  // namespace
 
-UnloadingPointResult unloading_point(const RapidLoadRecord& r, double mass) {
+UnloadingPointResult unloading_point(const RapidLoadRecord& r, double mass, double window) {
     const std::size_t n = r.time.size();
     if (n < 3 || r.force.size() != n || r.settlement.size() != n || r.velocity.size() != n)
         throw std::invalid_argument("unloading point: a record of at least 3 rows, every column as long as the time");
-    const std::vector<double> a = acceleration(r.time, r.velocity);
+    const std::vector<double> a = acceleration(r.time, r.velocity, window);
     std::vector<double> soil(n);
     for (std::size_t i = 0; i < n; ++i) soil[i] = r.force[i] - mass * a[i];
     const std::size_t peak = static_cast<std::size_t>(std::max_element(r.force.begin(), r.force.end()) - r.force.begin());

@@ -28,9 +28,11 @@ struct UnloadingPointResult {
     Table curve;
 };
 
-// mass: the pile's (whole ring), kg. Throws when the record has no unloading point (the pile
-// still moving down at its end) or no load.
-UnloadingPointResult unloading_point(const RapidLoadRecord& record, double mass);
+// mass: the pile's (whole ring), kg; window: the acceleration's differences span at least
+// this (s; the pile's wave period 2 L / c averages its ringing out; 0: neighbouring rows).
+// Throws when the record has no unloading point (the pile still moving down at its end) or
+// no load.
+UnloadingPointResult unloading_point(const RapidLoadRecord& record, double mass, double window = 0.0);
 
 // The stage's rows of a run's history (the pile recorder's columns), the settlement from the
 // stage's start.
