@@ -41,6 +41,8 @@ struct MpmWaterInput {
     double viscosity = 1.0e-3;    // Pa s (converts an intrinsic permeability)
     bool free_surface = false;
     double level = 0.0;           // elevation of the free water surface, m
+    bool cavitation = false;      // the pore water's absolute pressure held at 0 or above
+    double atmospheric_pressure = 101.325e3;  // Pa, on the free water surface
 };
 
 struct MpmPressureInput {  // on the points in a box: force = -pressure n x face area

@@ -303,6 +303,9 @@ MpmCase read_mpm_case(const std::string& file) {
             c.water.free_surface = true;
             c.water.level = w->number("level", {"the elevation of the free water surface in m", [](double) { return true; }});
         }
+        c.water.cavitation = w->boolean_or("cavitation", false);
+        c.water.atmospheric_pressure =
+            w->number_or("atmospheric_pressure", 101.325e3, non_negative("the air's pressure on the water surface in Pa"));
         w->finish();
     }
     for (auto m : root.maps("regions")) c.regions.push_back(read_region(std::move(m), c));

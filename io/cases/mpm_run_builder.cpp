@@ -166,6 +166,8 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
     m.water.bulk_modulus = c.water.bulk_modulus;
     m.water.free_surface = c.water.free_surface;
     m.water.level = c.water.level;
+    m.water.cavitation = c.water.cavitation;
+    m.water.atmospheric_pressure = c.water.atmospheric_pressure;
     m.water.gravity = c.gravity > 0.0 ? c.gravity : 9.81;
     bool coupled = false;
     for (const auto& mat : c.materials) {

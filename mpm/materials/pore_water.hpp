@@ -31,6 +31,11 @@ struct PoreWater {
         return free_surface && z < level ? density * gravity * (level - z) : 0.0;
     }
     bool submerged(double z) const { return free_surface && z < level; }
+    // Cavitation: water cannot take an absolute pressure below zero (its vapour pressure,
+    // some 2 kPa, neglected), so the excess pressure stays above -(p_atm + hydrostatic).
+    bool cavitation = false;
+    double atmospheric_pressure = 101.325e3;  // Pa, on the free surface
+    double least_excess_pressure(double z) const { return -(atmospheric_pressure + hydrostatic_pressure(z)); }
 };
 
 // The P-wave speeds of a saturated soil point (skeleton P-wave modulus M, porosity n, solid

@@ -314,6 +314,10 @@ void MpmSolver<D>::update_pore_water(double dt) {
             }
             p.pore_pressure[i] -= Kw / n * ((1.0 - n) * solid_volumetric + n * div_w * dt);
         }
+        // Cavitation: the water's absolute pressure does not fall below zero (it boils off
+        // instead of pulling the grains together: no unbounded dilatant strength).
+        if (m_.water.cavitation)
+            p.pore_pressure[i] = std::max(p.pore_pressure[i], m_.water.least_excess_pressure(p.x[D * i + D - 1]));
         // The porosity is the point's: a model's void ratio starts each step from it.
         const int e_at = void_ratio_state_[p.material[i]];
         if (e_at >= 0) p.state[static_cast<std::size_t>(p.state_stride) * i + e_at] = n / (1.0 - n);

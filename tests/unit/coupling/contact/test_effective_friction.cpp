@@ -69,3 +69,4 @@ TEST(ContactEffectiveFriction, CoulombActsOnTheNormalForceLessThePorePressure) {
     EXPECT_EQ(slide(1.2 * dry.normal / dry.area).tangential, 0.0);  // liquefied: no grip
     EXPECT_NEAR(slide(-p).tangential, 0.5 * (dry.normal + p * dry.area), 1e-9 * dry.normal);
 }
+

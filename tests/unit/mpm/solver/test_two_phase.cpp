@@ -292,3 +292,38 @@ TEST(TwoPhase, HandoverBetweenExplicitAndImplicitStagesLosesNothing) {
 }
 
 }  // namespace
+
+// Cavitation: a saturated block under a free water surface torn open (its points moving
+// apart, the water too slow to follow) draws its pore pressure down to the water's
+// absolute zero, -(p_atm + rho_w g depth), and no further; without the limit it falls far
+// below.
+TEST(TwoPhase, CavitationHoldsTheWatersAbsolutePressureAtZero) {
+    auto pulled = [](bool cavitation) {
+        MpmModel<2> m = saturated_block(1e-9);  // all but undrained
+        m.water.free_surface = true;
+        m.water.level = 3.0;
+        m.water.cavitation = cavitation;
+        for (std::size_t i = 0; i < m.particles.size(); ++i)
+            for (int d = 0; d < 2; ++d) {
+                m.particles.v[2 * i + d] = 0.5 * (m.particles.x[2 * i + d] - 1.2);
+                m.particles.w[2 * i + d] = m.particles.v[2 * i + d];
+            }
+        MpmSolver<2> s(m);
+        const double dt = s.stable_time_step();
+        double below = 0.0, at = 1e300;  // the most below the limit; the nearest to it, over the run
+        for (int n = 0; n < 20; ++n) {
+            s.step(dt);
+            for (std::size_t i = 0; i < m.particles.size(); ++i) {
+                const double limit = m.water.least_excess_pressure(m.particles.x[2 * i + 1]);
+                below = std::max(below, limit - m.particles.pore_pressure[i]);
+                at = std::min(at, std::abs(m.particles.pore_pressure[i] - limit));
+            }
+        }
+        return std::make_pair(below, at);
+    };
+    const auto [below_free, at_free] = pulled(false);
+    EXPECT_GT(below_free, 1.0e5);  // without the limit: far past it
+    const auto [below, at] = pulled(true);
+    EXPECT_EQ(below, 0.0);
+    EXPECT_LT(at, 1e-6);  // some points sit on it
+}
