@@ -85,11 +85,12 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
     const bool damped = m.local_damping > 0.0;
     const double strongest = std::min(2.0 * 0.05 / omega1, 0.75 * pile_.operators().stable_time_step);
     pile_.set_vibration_damping(damped ? 2.0 * 0.05 * omega1 : 0.0);
-    // A damped stage's local damping also stills the pile's rigid motion on its contact springs
-    // (a nil step's pile bounced there, the soil's unbalanced force 0.18 of its load after
-    // 20 000 steps), unless the head is driven (it would drag a jacked pile).
+    // A damped stage's local damping also stills the pile on its contact springs, split into
+    // its rigid motion and its vibration (ExplicitPile::set_split_damping; a nil step's pile
+    // chattered there, the soil's unbalanced force 0.18 of its load after 20 000 steps),
+    // unless the head is driven (it would drag a jacked pile).
     pile_.set_local_damping(settling_);
-    pile_.set_rigid_damping(settling_ == 0.0 && damped && !head.driven ? m.local_damping : 0.0);
+    pile_.set_split_damping(settling_ == 0.0 && damped && !head.driven ? m.local_damping : 0.0);
     pile_.set_stiffness_damping(std::max(2.0 * kStepModeDamping * dt, damped ? strongest : 0.0));
     double blow_impulse = 0.0;  // down positive
     if (head.struck && enthru_stage_ != stage) {

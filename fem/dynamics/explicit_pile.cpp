@@ -128,7 +128,7 @@ double ExplicitPile::damped_stable_time_step() const {
     // Central differences with damping beta K: omega dt <= 2 (sqrt(1 + xi^2) - xi), xi = beta omega / 2.
     // Local damping adds up to alpha |f| to a force that brakes the motion: the stiffness
     // seen is (1 + alpha) K at worst.
-    const double omega = 2.0 / ops_.stable_time_step * std::sqrt(1.0 + std::max(local_damping_, rigid_damping_));
+    const double omega = 2.0 / ops_.stable_time_step * std::sqrt(1.0 + std::max(local_damping_, split_damping_));
     const double xi = 0.5 * stiffness_damping_ * omega;
     return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi);
 }
@@ -195,7 +195,7 @@ void ExplicitPile::advance_velocity(double dt) {
     toe_reaction_ = support_reaction(c);
     // Dashpot taken at mid-step: unconditionally stable for any impedance. One branch-free
     // loop over all DOFs; the fixed ones are put back to rest after it.
-    if (rigid_damping_ > 0.0) {
+    if (split_damping_ > 0.0) {
         damping_scratch_.resize(n);
         advance_velocity_split_damping(c);
     } else if (local_damping_ > 0.0) {
@@ -230,10 +230,10 @@ void ExplicitPile::advance_velocity_split_damping(const VelocityUpdate& c) {
     for (int i = 0; i < n; ++i) {
         const bool axial = i % dim == dim - 1 && !fixed_[i];
         const double f = f_ext_[i] - f_int_[i] - (axial ? m[i] * per_mass : 0.0);
-        damping_scratch_[i] = -rigid_damping_ * std::abs(f) * sign(v_[i] - (axial ? mean : 0.0));
+        damping_scratch_[i] = -split_damping_ * std::abs(f) * sign(v_[i] - (axial ? mean : 0.0));
         if (axial) vibration_sum += damping_scratch_[i];
     }
-    const double rigid = -rigid_damping_ * std::abs(resultant) * sign(mean);
+    const double rigid = -split_damping_ * std::abs(resultant) * sign(mean);
     for (int i = 0; i < n; ++i) {
         const bool axial = i % dim == dim - 1 && !fixed_[i];
         const double d = damping_scratch_[i] + (axial ? m[i] / mass * (rigid - vibration_sum) : 0.0);

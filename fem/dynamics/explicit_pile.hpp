@@ -81,7 +81,7 @@ public:
     // damping forces made to sum to zero). Per DOF alone it would also resist the rigid drift
     // through the vibration's noisy forces, like friction: a pile resting on soil stood 0.3 %
     // out of balance; on the rigid motion alone a pile chattered on its contact. 0: none.
-    void set_rigid_damping(double alpha) { rigid_damping_ = alpha; }
+    void set_split_damping(double alpha) { split_damping_ = alpha; }
     // The stable step with that damping (the undamped one when beta = 0).
     double damped_stable_time_step() const;
     // Moves the whole pile axially by delta (m, up positive) without straining it.
@@ -119,7 +119,7 @@ private:
     double stiffness_damping_ = 0.0;  // beta, s
     double vibration_damping_ = 0.0;  // 1/s (set_vibration_damping)
     double local_damping_ = 0.0;      // Cundall's alpha
-    double rigid_damping_ = 0.0;      // Cundall's alpha on the rigid axial motion
+    double split_damping_ = 0.0;      // Cundall's alpha, split: rigid motion and vibration
     std::vector<double> damped_u_;     // u + beta v (scratch)
     std::vector<double> damping_scratch_;  // split damping's vibration forces (scratch)
 };

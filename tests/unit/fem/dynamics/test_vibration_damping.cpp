@@ -65,7 +65,7 @@ TEST(VibrationDamping, SplitDampingKeepsTheMomentumOfAVibratingRodAndBrakesItsRi
     std::vector<double> u(n), v(n, v0);
     for (int i = 0; i < n; ++i) u[i] = 1e-4 * std::sin(0.7 * i);
     pile.restore(u, v);
-    pile.set_rigid_damping(alpha);
+    pile.set_split_damping(alpha);
     const double dt = 0.9 * pile.damped_stable_time_step();
     const double p0 = momentum(pile);
     double mass = 0.0;
