@@ -187,12 +187,7 @@ def main():
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
-    try:
-        args.permeabilities = [float(k) for k in args.permeabilities.split(",")]
-    except ValueError:
-        raise InputError(f"--permeabilities: expected numbers (m/s) separated by commas, got '{args.permeabilities}'")
-    if any(k <= 0.0 for k in args.permeabilities):
-        raise InputError("--permeabilities: expected positive numbers (m/s)")
+    args.permeabilities = study_runs.numbers(args.permeabilities, "--permeabilities", "permeabilities in m/s")
     if not args.refine >= 1.0:
         raise InputError(f"--refine: expected a factor of at least 1, got {args.refine}")
     return study(args)

@@ -12,6 +12,10 @@ drivability.png   the drivability sheet: four panels sharing a depth axis pointi
                   varying with depth) a last panel shows the hammer energy used.
 bearing_graph.png when the bearing graph CSV exists: ultimate resistance against blows per
                   0.25 m, one line per energy level, and the stresses against resistance.
+calibration.png   with a calibration (summary calibration): per coupled run, the head
+                  velocity (and force, for a ram-cushion hammer) of the coupled model, the
+                  fast path before and after the fit; the sets beside them. The coupled
+                  blow counts are also marked on the sheet's blow-count panel.
 
 Inputs in OUT_DIR: summary.json (title, runs[], refusal/hard-driving blow counts, optional
 observed points and bearing_graph_file) and the CSV files it names.
@@ -103,6 +107,9 @@ def read_summary(out_dir):
         "cpt_profile_file": summary.get("cpt_profile_file") if isinstance(summary.get("cpt_profile_file"), str) else None,
         "rated_energy_J": summary.get("rated_energy_J") if isinstance(summary.get("rated_energy_J"), (int, float)) else None,
         "runs": [],
+        "coupled": [(number(p, "depth_m", path), number(p, "blows_per_0.25m", path))
+                    for p in summary.get("coupled_blow_counts") or []],
+        "calibration": summary.get("calibration"),
     }
     if out["bearing_file"] is not None and not isinstance(out["bearing_file"], str):
         raise InputError(f"{path}: \"bearing_graph_file\" is not a string")
@@ -353,6 +360,11 @@ def plot_drivability(out_dir, summary):
         ax_stress.plot(d["max_compression_Pa"] * mn, depth, color=color, lw=1.8)
         ax_stress.plot(d["max_tension_Pa"] * mn, depth, color=color, lw=1.3, ls="--")
 
+    if summary["coupled"]:
+        cd, cb = zip(*summary["coupled"])
+        ax_blows.plot(cb, cd, ls="none", marker="D", ms=7, mfc="gold", mec="black", mew=0.9, zorder=6)
+        handles.append((Line2D([], [], ls="none", marker="D", ms=7, mfc="gold", mec="black"),
+                        "coupled MPM-FEM (fitted to)"))
     if observed:
         od, ob = zip(*observed)
         ax_cum.plot(ob, od, ls="none", marker="o", ms=6, mfc="black", mec="white", mew=0.8,
@@ -490,6 +502,63 @@ def plot_bearing_graph(out_dir, summary):
     plt.close(fig)
 
 
+CALIBRATION_COLUMNS = ["depth_m", "time_s", "coupled_force_N", "coupled_velocity_m_s", "fast_before_force_N",
+                       "fast_before_velocity_m_s", "fast_after_force_N", "fast_after_velocity_m_s"]
+
+
+def plot_calibration(out_dir, summary):
+    cal = summary["calibration"]
+    if not cal:
+        return
+    if not isinstance(cal, dict) or not isinstance(cal.get("points"), list):
+        raise InputError(f"{out_dir}/summary.json: \"calibration\" without its points")
+    r = read_columns(os.path.join(out_dir, os.path.basename(cal.get("records_file", "calibration_records.csv"))),
+                     CALIBRATION_COLUMNS)
+    depths = sorted(set(r["depth_m"].tolist()))
+    force = bool(cal.get("compares_force"))
+    rows = 2 if force else 1
+    fig, axes = plt.subplots(rows, len(depths) + 1, figsize=(4.2 * (len(depths) + 1), 4.0 * rows + 0.8),
+                             squeeze=False)
+    styles = [("coupled", "k", "-", 2.0, "coupled MPM-FEM"), ("fast_before", "tab:blue", "--", 1.4, "fast path, before"),
+              ("fast_after", "tab:red", "-", 1.4, "fast path, fitted")]
+    for j, d in enumerate(depths):
+        sel = r["depth_m"] == d
+        t = r["time_s"][sel] * 1e3
+        for key, color, ls, lw, label in styles:
+            axes[0][j].plot(t, r[key + "_velocity_m_s"][sel], color=color, ls=ls, lw=lw, label=label)
+            if force:
+                axes[1][j].plot(t, r[key + "_force_N"][sel] * 1e-6, color=color, ls=ls, lw=lw)
+        axes[0][j].set_title(f"{d:.2f} m", fontsize=11)
+        axes[0][j].set_ylabel("head velocity, down (m/s)")
+        axes[-1][j].set_xlabel("time from impact (ms)")
+        if force:
+            axes[1][j].set_ylabel("head force (MN)")
+        for a in (axes[0][j], axes[-1][j]):
+            a.grid(True, alpha=0.35)
+    axes[0][0].legend(fontsize=9)
+    ax = axes[0][-1]
+    pts = cal["points"]
+    x = np.arange(len(pts))
+    w = 0.27
+    for k, (key, color, label) in enumerate([("coupled_set_m", "k", "coupled"),
+                                             ("fast_set_before_m", "tab:blue", "fast, before"),
+                                             ("fast_set_after_m", "tab:red", "fast, fitted")]):
+        ax.bar(x + (k - 1) * w, [1e3 * number(p, key, "calibration.points") for p in pts], w, color=color, label=label)
+    ax.set_xticks(x, [f"{number(p, 'depth_m', 'calibration.points'):.2f} m" for p in pts])
+    ax.set_ylabel("set per blow (mm)")
+    ax.set_title("Sets", fontsize=11)
+    ax.legend(fontsize=9)
+    ax.grid(True, axis="y", alpha=0.35)
+    for a in axes[1:, -1] if force else []:
+        a.axis("off")
+    fig.suptitle(f"{summary['title']}\nthe fast path fitted to the coupled model: objective "
+                 f"{cal.get('objective_before', float('nan')):.3g} before, {cal.get('objective_after', float('nan')):.3g} after",
+                 fontsize=12, fontweight="bold")
+    fig.tight_layout(rect=(0, 0, 1, 0.9))
+    fig.savefig(os.path.join(out_dir, "calibration.png"), dpi=100)
+    plt.close(fig)
+
+
 def main(argv):
     if len(argv) != 2:
         print(f"usage: {PROG} OUT_DIR", file=sys.stderr)
@@ -501,7 +570,7 @@ def main(argv):
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     status = 0
-    for plot in (plot_drivability, plot_bearing_graph):
+    for plot in (plot_drivability, plot_bearing_graph, plot_calibration):
         try:
             plot(out_dir, summary)
         except (OSError, InputError) as e:

@@ -38,6 +38,18 @@ def run_case(case, out_dir, pilempm, threads, template):
     return out_dir
 
 
+def numbers(text, option, what):
+    """A list of numbers separated by commas, given as `option`; ValueError (bad input)
+    naming the option and what was expected when it is not one, or a number is not above 0."""
+    try:
+        values = [float(x) for x in text.split(",")]
+    except ValueError:
+        raise ValueError(f"{option}: expected {what} separated by commas, got '{text}'")
+    if not values or any(v <= 0.0 for v in values):
+        raise ValueError(f"{option}: expected positive {what}, got '{text}'")
+    return values
+
+
 def exit_with(prog, main, input_errors):
     """Runs main() and exits with its status: 2 on bad input (the exception types in
     input_errors, and YAML errors), 1 when a run failed (RuntimeError)."""

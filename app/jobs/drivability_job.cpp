@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "io/writers/terminal_progress.hpp"
 #include "app/jobs/verification_runner.hpp"
@@ -34,14 +35,23 @@ const coupling::SoilCase& reference_case(const coupling::DrivabilitySetup& s) {
 }
 
 std::vector<VerificationCheck> run_checks(const io::DrivabilityCase& c, const coupling::DrivabilitySetup& s,
-                                          const coupling::DrivabilityResult& r) {
+                                          const coupling::DrivabilityResult& r,
+                                          const coupling::CalibrationResult* calibration) {
     const double depth = c.verification_depth > 0.0 ? c.verification_depth : s.final_depth;
     const auto& ref = reference_case(s);
     std::vector<VerificationCheck> all;
     auto append = [&all](std::vector<VerificationCheck> v) { all.insert(all.end(), v.begin(), v.end()); };
     for (const auto& name : c.verification_checks) {
         if (name == "static_push") append(coupling::check_static_push(s, ref, depth));
-        else if (name == "bearing_graph_monotonic") append(coupling::check_bearing_graph(r.bearing_graph));
+        else if (name == "calibration_sets" && calibration) {
+            // The fitted fast path against the coupled model it was fitted to, run by run.
+            for (const auto& p : calibration->points) {
+                char label[64];
+                std::snprintf(label, sizeof label, "calibrated_set_at_%.2fm", p.target.depth);
+                all.push_back(make_check(label, p.fast_set_after, p.target.set, c.calibration_tolerance, true,
+                                         "the fitted fast path's set against the coupled model's (" + p.target.source + ")"));
+            }
+        } else if (name == "bearing_graph_monotonic") append(coupling::check_bearing_graph(r.bearing_graph));
         else if (name == "blow_energy_balance") append(coupling::check_blow_energy(s, ref, depth));
         else if (name == "danish_formula") {
             const auto srd = coupling::srd_for_driving(s, ref, depth);
@@ -59,8 +69,9 @@ std::vector<VerificationCheck> run_checks(const io::DrivabilityCase& c, const co
     return all;
 }
 
+// `cases`: every run's soil case (the setup's, and the calibrated one where there is one).
 io::JsonObject summary_json(const io::DrivabilityCase& c, const coupling::DrivabilitySetup& s,
-                            const coupling::DrivabilityResult& r) {
+                            const std::vector<coupling::SoilCase>& cases, const coupling::DrivabilityResult& r) {
     io::JsonObject o;
     o.add("title", c.title).add("case_file", c.file).add("analysis", std::string("drivability"))
         .add("hammer", c.hammer_description)
@@ -90,10 +101,9 @@ io::JsonObject summary_json(const io::DrivabilityCase& c, const coupling::Drivab
             .add("hard_driving_from_m", run.hard_driving_from >= 0.0 ? run.hard_driving_from : kNaN)
             .add("max_compression_Pa", run.max_compression).add("max_compression_at_depth_m", run.max_compression_depth)
             .add("max_tension_Pa", run.max_tension).add("max_tension_at_depth_m", run.max_tension_depth);
-        for (std::size_t k = 0; k < s.cases.size(); ++k)
-            if (s.cases[k].name == run.soil_case)
-                j.add("srd_method", std::string(coupling::srd_method_name(s.cases[k].method)))
-                    .add("srd_factor", s.cases[k].factor);
+        for (const auto& k : cases)
+            if (k.name == run.soil_case)
+                j.add("srd_method", std::string(coupling::srd_method_name(k.method))).add("srd_factor", k.factor);
         worst_c = std::max(worst_c, run.max_compression);
         worst_t = std::max(worst_t, run.max_tension);
         runs.push_back(std::move(j));
@@ -103,6 +113,69 @@ io::JsonObject summary_json(const io::DrivabilityCase& c, const coupling::Drivab
     o.add("depth_points", static_cast<double>(r.depth_points)).add("blows_simulated", static_cast<double>(r.blows_simulated))
         .add("wall_time_s", r.wall_time);
     return o;
+}
+
+const coupling::SoilCase& named_case(const coupling::DrivabilitySetup& s, const std::string& name) {
+    for (const auto& k : s.cases)
+        if (k.name == name) return k;
+    throw std::logic_error("no soil case " + name);  // the reader checked it
+}
+
+io::JsonObject parameters_json(const coupling::FastPathSoil& soil) {
+    io::JsonObject o;
+    o.add("srd_factor", soil.srd_factor).add("shaft_quake_m", soil.smith.shaft_quake)
+        .add("toe_quake_m", soil.smith.toe_quake).add("toe_damping", soil.smith.toe_damping);
+    if (soil.smith.law == coupling::DampingLaw::Case) o.add("shaft_damping_case", soil.smith.shaft_damping);
+    else o.add("sand_shaft_damping_s_m", soil.sand_shaft_damping).add("clay_shaft_damping_s_m", soil.clay_shaft_damping);
+    return o;
+}
+
+// The fit, its residuals and the coupled blow counts the plot marks on the sheet.
+void add_calibration_json(io::JsonObject& o, const io::DrivabilityCase& c, const coupling::SoilCase& sc,
+                          const coupling::CalibrationResult& r) {
+    io::JsonObject j;
+    std::vector<std::string> fitted, at_bound;
+    for (auto p : r.fitted) fitted.push_back(coupling::calibration_parameter_name(p));
+    for (auto p : r.at_bound) at_bound.push_back(coupling::calibration_parameter_name(p));
+    std::vector<io::JsonObject> points, counts;
+    for (const auto& p : r.points) {
+        io::JsonObject q;
+        q.add("run", p.target.source).add("depth_m", p.target.depth).add("blows", static_cast<double>(p.target.blows))
+            .add("coupled_set_m", p.target.set).add("fast_set_before_m", p.fast_set_before)
+            .add("fast_set_after_m", p.fast_set_after).add("record_misfit_before", p.record_misfit_before)
+            .add("record_misfit_after", p.record_misfit_after);
+        points.push_back(std::move(q));
+        io::JsonObject b;
+        b.add("depth_m", p.target.depth).add("blows_per_0.25m", 0.25 / p.target.set);
+        counts.push_back(std::move(b));
+    }
+    j.add("soil_case", c.calibration_soil_case).add("srd_method", std::string(coupling::srd_method_name(sc.method)))
+        .add("fitted", io::json_lines("parameter", fitted)).add("at_bound", io::json_lines("parameter", at_bound))
+        .add("before", std::make_shared<io::JsonObject>(parameters_json(r.before)))
+        .add("after", std::make_shared<io::JsonObject>(parameters_json(r.after)))
+        .add("objective_before", r.objective_before).add("objective_after", r.objective_after)
+        .add("objective", std::string("mean over the runs of ln(fast set / coupled set)^2 + record_weight x the head "
+                                      "records' relative mean square difference (velocity; force too for a ram-cushion hammer); "
+                                      "after the fit, + regularisation x sum of ln(fitted factor)^2"))
+        .add("record_weight", c.calibration.record_weight).add("regularisation", c.calibration.regularisation).add("record_window_s", r.record_window)
+        .add("compares_force", r.compares_force).add("evaluations", static_cast<double>(r.evaluations))
+        .add("converged", r.converged).add("wall_time_s", r.wall_time).add("points", points)
+        .add("file", std::string("calibration.csv")).add("records_file", std::string("calibration_records.csv"));
+    o.add("calibration", std::make_shared<io::JsonObject>(j)).add("coupled_blow_counts", counts);
+}
+
+void print_calibration(const coupling::CalibrationResult& r) {
+    std::printf("  calibrated on %zu coupled run(s) (%d evaluations, %.1f s%s): objective %.4g -> %.4g\n", r.points.size(),
+                r.evaluations, r.wall_time, r.converged ? "" : ", not converged", r.objective_before, r.objective_after);
+    for (auto p : r.fitted)
+        std::printf("    %-14s %10.4g -> %.4g%s\n", coupling::calibration_parameter_name(p), r.before.value(p),
+                    r.after.value(p),
+                    std::find(r.at_bound.begin(), r.at_bound.end(), p) != r.at_bound.end() ? "  (on its bound)" : "");
+    std::printf("    %8s %12s %12s %12s %10s %10s\n", "depth", "coupled set", "fast before", "fast after", "rec. before",
+                "rec. after");
+    for (const auto& p : r.points)
+        std::printf("    %6.2f m %9.2f mm %9.2f mm %9.2f mm %10.3f %10.3f\n", p.target.depth, 1e3 * p.target.set,
+                    1e3 * p.fast_set_before, 1e3 * p.fast_set_after, p.record_misfit_before, p.record_misfit_after);
 }
 
 void print_summary(const io::DrivabilityCase& c, const coupling::DrivabilityResult& r, const fs::path& out) {
@@ -161,6 +234,13 @@ int check_drivability_case(const std::string& file) {
     std::printf("\n  SRD at %.2f m:", c.final_depth);
     for (const auto& sc : c.cases)
         std::printf("  %s %.2f MN", sc.name.c_str(), coupling::srd_for_driving(s, sc, c.final_depth).total() * 1e-6);
+    if (!c.calibration_targets.empty()) {
+        std::printf("\n  calibration    the %s soil fitted to %zu coupled run(s):", c.calibration_soil_case.c_str(),
+                    c.calibration_targets.size());
+        for (const auto& t : c.calibration_targets)
+            std::printf("\n                 %6.2f m, %d blows, set %.2f mm  (%s)", t.depth, t.blows, 1e3 * t.set,
+                        t.source.c_str());
+    }
     std::printf("\n  energy levels  %zu, threads %s\n", c.energy_levels.size(),
                 c.threads > 0 ? std::to_string(c.threads).c_str() : "all cores");
     return 0;
@@ -171,20 +251,44 @@ int run_drivability_case(const std::string& file, const fs::path& out_dir, bool 
     const coupling::DrivabilitySetup setup = io::build_drivability_setup(c);
     io::StagedDirectory staged(out_dir);
     io::TerminalProgress progress("drivability", !quiet);
-    const auto result = coupling::run_drivability(
+    auto result = coupling::run_drivability(
         setup, [&progress](long done, long total) { progress.update_count(done, total, "depth points"); });
     progress.done();
+    // The calibrated sheet beside the others: the chosen case's soil fitted to the coupled runs.
+    std::optional<coupling::CalibrationResult> calibration;
+    if (!c.calibration_targets.empty()) {
+        const coupling::SoilCase& sc = named_case(setup, c.calibration_soil_case);
+        if (!quiet)
+            std::fprintf(stderr, "fitting the %s soil to %zu coupled run(s) ...\n", sc.name.c_str(),
+                         c.calibration_targets.size());
+        calibration = coupling::calibrate_fast_path(setup, sc, c.calibration_targets, c.calibration);
+        const auto calibrated = coupling::run_drivability(coupling::with_soil(setup, sc, calibration->after, "calibrated"));
+        for (const auto& run : calibrated.runs) result.runs.push_back(run);
+        result.depth_points += calibrated.depth_points;
+        result.blows_simulated += calibrated.blows_simulated;
+        result.wall_time += calibrated.wall_time;
+    }
 
     std::vector<Table> tables;
     for (const auto& run : result.runs) tables.push_back(run.table);
     if (result.bearing_graph.rows() > 0) tables.push_back(result.bearing_graph);
+    if (calibration) {
+        tables.push_back(coupling::calibration_table(*calibration));
+        tables.push_back(coupling::calibration_records_table(*calibration));
+    }
     for (const auto& t : tables) io::write_csv(staged.path() / (t.name + ".csv"), t);
     if (c.cpt_soil)
         io::write_csv(staged.path() / "cpt_profile.csv", coupling::cpt_profile_table(c.cpt_interpretation, "cpt_profile"));
 
-    io::JsonObject summary = summary_json(c, setup, result);
+    std::vector<coupling::SoilCase> cases = setup.cases;
+    if (calibration) {
+        const coupling::SoilCase& sc = named_case(setup, c.calibration_soil_case);
+        cases.push_back({"calibrated", sc.method, calibration->after.srd_factor});
+    }
+    io::JsonObject summary = summary_json(c, setup, cases, result);
+    if (calibration) add_calibration_json(summary, c, named_case(setup, c.calibration_soil_case), *calibration);
     if (!c.verification_checks.empty()) {
-        const auto checks = run_checks(c, setup, result);
+        const auto checks = run_checks(c, setup, result, calibration ? &*calibration : nullptr);
         io::write_json(staged.path() / "verification.json", verification_json(c, checks, io::JsonObject{}));
         if (!quiet)
             for (const auto& k : checks)
@@ -202,7 +306,10 @@ int run_drivability_case(const std::string& file, const fs::path& out_dir, bool 
             std::fprintf(stderr, "note: %s\n", note.c_str());
     }
     staged.commit();
-    if (!quiet) print_summary(c, result, out_dir);
+    if (!quiet) {
+        print_summary(c, result, out_dir);
+        if (calibration) print_calibration(*calibration);
+    }
     return 0;
 }
 

@@ -110,9 +110,7 @@ void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
 void write_load_tests(const io::MpmCase& c, const Table& history, const coupling::CoupledPile& coupled,
                       const fs::path& dir, io::JsonObject& summary) {
     std::vector<io::JsonObject> tests;
-    double mass = 0.0;  // the pile's, the whole ring
-    const auto& lumped = coupled.pile().operators().lumped_mass;
-    for (std::size_t k = 1; k < lumped.size(); k += 2) mass += lumped[k];
+    const double mass = coupled.mass();
     for (std::size_t k = 0; k < c.stages.size(); ++k) {
         const auto& st = c.stages[k];
         if (st.load_test.empty()) continue;
@@ -123,12 +121,13 @@ void write_load_tests(const io::MpmCase& c, const Table& history, const coupling
         if (st.load_test == "static") {
             Table curve("load_test", {"time_s", "settlement_m", "load_N", "soil_resistance_N"});
             const auto& stages = mpm::column(history, "stage");
+            const auto& outer = mpm::column(history, "outer_shaft_resistance_N");
+            const auto& inner = mpm::column(history, "inner_shaft_resistance_N");
+            const auto& base = mpm::column(history, "base_resistance_N");
             std::size_t row = 0;
             for (std::size_t i = 0; i < stages.size(); ++i) {
                 if (stages[i] != stage) continue;
-                double soil = 0.0;
-                for (const char* side : {"outer_shaft_resistance_N", "inner_shaft_resistance_N", "base_resistance_N"})
-                    soil += mpm::column(history, side)[i];
+                const double soil = outer[i] + inner[i] + base[i];
                 curve.add_row({record.time[row], record.settlement[row], record.force[row], soil});
                 ++row;
             }

@@ -14,7 +14,10 @@ CoupledPile::CoupledPile(fem::ExplicitPile& pile, ContactSettings contact, PileF
       surface_(pile_contact_surface(pile.mesh())) {
     const auto& mass = pile_.operators().lumped_mass;
     surface_.inverse_mass.resize(pile_.mesh().num_nodes());
-    for (int i = 0; i < pile_.mesh().num_nodes(); ++i) surface_.inverse_mass[i] = 1.0 / mass[2 * i + 1];
+    for (int i = 0; i < pile_.mesh().num_nodes(); ++i) {
+        surface_.inverse_mass[i] = 1.0 / mass[2 * i + 1];
+        mass_ += mass[2 * i + 1];
+    }
 }
 
 namespace {
@@ -153,11 +156,9 @@ void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, 
 }
 
 double CoupledPile::unbalanced_force_ratio() const {
-    const auto& mass = pile_.operators().lumped_mass;
-    double m = 0.0, up = 0.0;
-    for (int i = 0; i < pile_.mesh().num_nodes(); ++i) m += mass[2 * i + 1];
+    double up = 0.0;
     for (const auto& side : contact_.totals().force_by_side) up += side[1];
-    const double weight = m * gravity_ * gravity_factor_;
+    const double weight = mass_ * gravity_ * gravity_factor_;
     const double scale = weight + std::abs(head_force_);
     return scale > 0.0 ? std::abs(up - weight - head_force_) / scale : 0.0;
 }

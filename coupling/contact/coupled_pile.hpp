@@ -103,6 +103,7 @@ public:
     // The work of the pile's weight (at the present gravity factor) since it was placed: its
     // mass times g times its centre of mass's settlement, J (the blow's energy ledger).
     double weight_work() const;
+    double mass() const { return mass_; }  // kg, the whole ring's (the lumped axial mass)
     // The pile's momentum (the whole ring; velocities at the last half step), N s.
     std::array<double, 2> momentum() const;
     // Damping ratio of the pile at omega = 1 / dt in an undamped stage (coupled_pile.cpp).
@@ -114,6 +115,7 @@ private:
     PileFrame frame_;
     double gravity_;
     double gravity_factor_ = 1.0;
+    double mass_ = 0.0;  // kg, summed once: the pile's mass does not change
     double settling_ = 0.0;  // Cundall's alpha on the pile while a blow settles
     bool cut_fields_;
     ToeSlipLine slip_;

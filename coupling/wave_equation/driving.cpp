@@ -56,7 +56,7 @@ SmithSoil make_smith_soil(const fem::ExplicitPile& pile, const ResistanceDistrib
 }
 
 BlowOutcome simulate_blow(fem::ExplicitPile& pile, SmithSoil& soil, const fem::HammerSpec& hammer,
-                          double ram_element_size, const BlowOptions& options) {
+                          double ram_element_size, const BlowOptions& options, HeadRecord* record) {
     fem::BlowStepper stepper(pile, hammer, ram_element_size, &soil);
     const auto& mesh = pile.mesh();
     const double dt = options.time_step_factor * stepper.stable_time_step();
@@ -76,6 +76,7 @@ BlowOutcome simulate_blow(fem::ExplicitPile& pile, SmithSoil& soil, const fem::H
     const double toe0 = pile.toe_displacement();
 
     BlowOutcome out;
+    if (record) record->clear();
     std::vector<double> stress(mesh.num_elements());
     const auto& v = stepper.velocity_at_step();
     double enthru = 0.0, damping = 0.0, work = 0.0;
@@ -89,6 +90,11 @@ BlowOutcome simulate_blow(fem::ExplicitPile& pile, SmithSoil& soil, const fem::H
         }
         const double f_head = head.force_compression(stress), v_head = head.velocity_down(v, mesh);
         out.peak_head_force = std::max(out.peak_head_force, f_head);
+        if (record) {
+            record->time.push_back(n * dt);
+            record->force.push_back(f_head);
+            record->velocity.push_back(v_head);
+        }
         const double power = f_head * v_head, damp = pile.dashpot_power(v);
         const double load = stepper.applied_force() * v_head;
         if (n > 0) {
@@ -140,7 +146,7 @@ BlowOutcome simulate_blow(fem::ExplicitPile& pile, SmithSoil& soil, const fem::H
 PenetrationResult drive_at_penetration(const fem::PileMesh& mesh, const fem::LinearElasticSteel& steel,
                                        const ResistanceDistribution& srd, const SmithParameters& smith,
                                        const fem::HammerSpec& hammer, double ram_element_size,
-                                       const DrivingOptions& options) {
+                                       const DrivingOptions& options, HeadRecord* last_record) {
     fem::ExplicitPile pile(mesh, steel, {fem::ToeCondition::Free, 0.0});
     const fem::SectionGauge head(pile.mesh(), pile_length(pile.mesh()));
     const double impedance = head.area() * steel.youngs_modulus / steel.wave_speed();
@@ -154,7 +160,7 @@ PenetrationResult drive_at_penetration(const fem::PileMesh& mesh, const fem::Lin
     const double cap = 10.0 * options.refusal_blow_count;
     double previous = 0.0;
     for (int b = 1; b <= options.max_blows; ++b) {
-        r.last = simulate_blow(pile, soil, hammer, ram_element_size, options.blow);
+        r.last = simulate_blow(pile, soil, hammer, ram_element_size, options.blow, last_record);
         r.blows = b;
         const double set = r.last.set;
         if (b >= 2 && std::abs(set - previous) <= options.steady_tolerance * std::abs(set)) {

@@ -53,9 +53,17 @@ struct BlowOutcome {
     long steps = 0;
 };
 
-// One blow on a pile at rest, then kinetic damping until it is at rest again.
+// The head's record over a blow's dynamic phase, PDA-style: force (compression positive)
+// and velocity (down positive) at the head's gauge, from the blow's start.
+struct HeadRecord {
+    std::vector<double> time, force, velocity;  // s, N, m/s
+    void clear() { time.clear(), force.clear(), velocity.clear(); }
+};
+
+// One blow on a pile at rest, then kinetic damping until it is at rest again; the head's
+// record of the dynamic phase into `record` when given.
 BlowOutcome simulate_blow(fem::ExplicitPile& pile, SmithSoil& soil, const fem::HammerSpec& hammer,
-                          double ram_element_size, const BlowOptions& options);
+                          double ram_element_size, const BlowOptions& options, HeadRecord* record = nullptr);
 
 struct DrivingOptions {
     int max_blows = 8;
@@ -78,7 +86,7 @@ struct PenetrationResult {
 PenetrationResult drive_at_penetration(const fem::PileMesh& mesh, const fem::LinearElasticSteel& steel,
                                        const ResistanceDistribution& srd, const SmithParameters& smith,
                                        const fem::HammerSpec& hammer, double ram_element_size,
-                                       const DrivingOptions& options);
+                                       const DrivingOptions& options, HeadRecord* last_record = nullptr);
 
 // Quasi-static push of the head at `velocity` (m/s, down) to `displacement` (m): the
 // largest head force, which tends to the total static resistance (verification).

@@ -5,6 +5,7 @@
 
 #include "coupling/wave_equation/cpt_interpretation.hpp"
 #include "coupling/wave_equation/drivability.hpp"
+#include "coupling/wave_equation/fast_path_calibration.hpp"
 #include "io/cases/pile_hammer_input.hpp"
 
 namespace pilempm::io {
@@ -53,6 +54,11 @@ struct DrivabilityCase : CaseFile, PileInput, HammerInput {
     double verification_depth = 0.0;  // m; 0: final depth
     double observed_self_weight_penetration = -1.0;  // m, for the validation check
     double observed_tolerance = 0.5;                 // m
+    double calibration_tolerance = 0.1;              // the fitted sets against the coupled, relative
+    // calibration: the fast path fitted to coupled runs (empty targets: none).
+    std::vector<coupling::CalibrationTarget> calibration_targets;
+    std::string calibration_soil_case = "best_estimate";
+    coupling::CalibrationOptions calibration;
 };
 
 DrivabilityCase read_drivability_case(const std::string& file);

@@ -6,6 +6,7 @@
 
 #include "fem/mesh/rod_mesh.hpp"
 #include "io/cases/drivability_case.hpp"
+#include "io/cases/coupled_run_records.hpp"
 #include "io/cases/field_records.hpp"
 #include "io/yaml/numeric_file.hpp"
 #include "io/yaml/yaml_reader.hpp"
@@ -16,7 +17,7 @@ namespace {
 const std::vector<std::string> kAnalyses = {"pile_wave", "drivability", "drivability_study", "mpm", "element_test"};
 const std::vector<std::string> kChecks = {"static_push", "bearing_graph_monotonic",
                                           "blow_energy_balance", "danish_formula",
-                                          "self_weight_penetration"};
+                                          "self_weight_penetration", "calibration_sets"};
 
 coupling::SrdMethod method_from(const std::string& name) {
     if (name == "alm_hamre_2001") return coupling::SrdMethod::AlmHamre2001;
@@ -177,6 +178,44 @@ void read_cases(MapReader& root, DrivabilityCase& c) {
     }
 }
 
+// calibration: the coupled runs (output folders, relative to the case file) the soil case's
+// Smith soil is fitted to, and what is fitted.
+void read_calibration(MapReader m, DrivabilityCase& c) {
+    namespace fs = std::filesystem;
+    c.calibration_soil_case = m.text_or("soil_case", "best_estimate");
+    if (std::none_of(c.cases.begin(), c.cases.end(), [&c](const auto& k) { return k.name == c.calibration_soil_case; }))
+        m.fail("soil_case", "one of the soil cases (its SRD method is calibrated, its factor the start)",
+               "'" + c.calibration_soil_case + "'");
+    if (c.calibration_soil_case == "calibrated") m.fail("soil_case", "a soil case other than 'calibrated' (the fit's name)");
+    std::vector<std::string> names;
+    for (auto p : coupling::all_calibration_parameters()) names.push_back(coupling::calibration_parameter_name(p));
+    if (m.has("fit")) {
+        c.calibration.fit.clear();
+        for (const auto& w : m.words("fit", names))
+            for (auto p : coupling::all_calibration_parameters())
+                if (w == coupling::calibration_parameter_name(p)) c.calibration.fit.push_back(p);
+    }
+    const int skip = m.integer_or("skip_blows", 1, 0);
+    c.calibration.record_weight = m.number_or("record_weight", 1.0, non_negative("weight of the head records' misfit"));
+    c.calibration.record_window = m.number_or("record_window", 0.0, non_negative("time in s (0: the pulse and two round trips)"));
+    c.calibration.bound = m.number_or("bound", 10.0, {"a factor above 1", [](double x) { return x > 1.0; }});
+    c.calibration.regularisation =
+        m.number_or("regularisation", 0.01, non_negative("weight of sum ln(factor)^2 (the pull toward the start)"));
+    c.calibration.max_evaluations = m.integer_or("max_evaluations", 300, 1);
+    const int line = m.line_of("runs");
+    const YAML::Node runs = m.raw("runs");
+    if (!runs.IsSequence() || runs.size() == 0)
+        throw CaseError(m.file(), line, m.path() + ".runs", "a list of output folders of coupled driving runs", describe(runs));
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const std::string where = m.path() + ".runs[" + std::to_string(i) + "]";
+        if (!runs[i].IsScalar()) throw CaseError(m.file(), line, where, "a folder", describe(runs[i]));
+        fs::path folder(runs[i].Scalar());
+        if (folder.is_relative()) folder = fs::path(m.file()).parent_path() / folder;
+        c.calibration_targets.push_back(read_coupled_run(folder.string(), skip, m.file(), runs[i].Mark().line + 1, where));
+    }
+    m.finish();
+}
+
 // The hammer energy against depth: a table (depth, energy) or the columns of a driving
 // log; energies are fractions of the rated energy, or multiples of `reference_energy` (J).
 void read_energy_plan(MapReader m, DrivabilityCase& c) {
@@ -328,6 +367,10 @@ DrivabilityCase read_drivability_case(const std::string& file) {
         read_study(root.map("study"), c);
         check_study_cases(root, c);
     }
+    if (auto cal = root.optional_map("calibration")) {
+        if (c.study_mode) cal->fail("runs", "no calibration: section in a drivability_study (its study: calibrates the energy)");
+        read_calibration(std::move(*cal), c);
+    }
     if (auto b = root.optional_map("bearing_graph")) {
         c.bearing_resistances = b->numbers("resistances", positive("ultimate resistance in N"));
         c.bearing_shaft_fraction = b->number_or("shaft_fraction", 0.5,
@@ -355,6 +398,10 @@ DrivabilityCase read_drivability_case(const std::string& file) {
         c.observed_self_weight_penetration =
             v->number_or("observed_self_weight_penetration", -1.0, non_negative("depth in m"));
         c.observed_tolerance = v->number_or("observed_tolerance", 0.5, positive("depth tolerance in m"));
+        c.calibration_tolerance = v->number_or("calibration_tolerance", 0.1, positive("relative tolerance on the sets"));
+        if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "calibration_sets") !=
+                c.verification_checks.end() && c.calibration_targets.empty())
+            v->fail("checks", "a calibration: section for the calibration_sets check", "none");
         if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "self_weight_penetration") !=
                 c.verification_checks.end() && c.observed_self_weight_penetration < 0.0)
             v->fail("observed_self_weight_penetration", "the observed depth for the self_weight_penetration check");

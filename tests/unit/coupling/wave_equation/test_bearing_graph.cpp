@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "coupling/wave_equation/drivability.hpp"
-#include "fem/mesh/pile_geometry.hpp"
-#include "fem/mesh/rod_mesh.hpp"
+#include "sand_pipe_pile.hpp"
 
 using namespace pilempm;
 using namespace pilempm::coupling;
@@ -32,14 +30,8 @@ SoilLayer layer(SoilType type, double top, double bottom) {
 // A 30 m, 1.5 m pipe pile (1 m rod elements), 6 m of sand over clay, a bearing graph of one
 // point (3 MN, 60 % on the shaft) at 15.25 m and a depth study of two points.
 DrivabilitySetup sand_over_clay(SoilType lower = SoilType::Clay) {
-    DrivabilitySetup s;
-    s.mesh = fem::mesh_rod(fem::make_pile_geometry({{30.0, 1.5, 0.025}}), 1.0);
-    s.steel = {210e9, 0.3, 7850.0};
-    s.outer_diameter = 1.5;
-    s.wall_thickness = 0.025;
-    s.pile_mass = 7850.0 * M_PI * (1.5 - 0.025) * 0.025 * 30.0;
+    DrivabilitySetup s = sand_pipe_pile();
     s.soil.layers = {layer(SoilType::Sand, 0.0, kBoundary), layer(lower, kBoundary, 40.0)};
-    s.cases = {{"best_estimate", SrdMethod::AlmHamre2001, 1.0}};
     s.hammer.kind = HammerKind::RamCushion;
     s.hammer.ram_cushion.ram.mass = 5000.0;
     s.hammer.ram_cushion.impact_velocity = 4.0;

@@ -3,9 +3,7 @@
 
 #include <cmath>
 
-#include "coupling/wave_equation/drivability.hpp"
-#include "fem/mesh/pile_geometry.hpp"
-#include "fem/mesh/rod_mesh.hpp"
+#include "sand_pipe_pile.hpp"
 
 using namespace pilempm;
 using namespace pilempm::coupling;
@@ -14,20 +12,7 @@ using namespace pilempm::fem;
 namespace {
 
 DrivabilitySetup small_study() {
-    DrivabilitySetup s;
-    s.mesh = fem::mesh_rod(fem::make_pile_geometry({{30.0, 1.5, 0.025}}), 1.0);
-    s.steel = {210e9, 0.3, 7850.0};
-    s.outer_diameter = 1.5;
-    s.wall_thickness = 0.025;
-    s.pile_mass = 7850.0 * M_PI * (1.5 - 0.025) * 0.025 * 30.0;
-    SoilLayer sand;
-    sand.top = 0.0;
-    sand.bottom = 40.0;
-    sand.submerged_unit_weight = 10e3;
-    sand.relative_density = 0.8;
-    sand.interface_friction_angle = 28.0;
-    s.soil.layers = {sand};
-    s.cases = {{"best_estimate", SrdMethod::AlmHamre2001, 1.0}};
+    DrivabilitySetup s = sand_pipe_pile();
     s.hammer.kind = HammerKind::RamCushion;
     s.hammer.ram_cushion.ram.mass = 5000.0;
     s.hammer.ram_cushion.impact_velocity = 4.0;

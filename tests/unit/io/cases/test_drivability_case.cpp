@@ -111,3 +111,56 @@ TEST(DrivabilityCase, StudyNeedsItsBandAndCalibrationCases) {
     fs::remove(f);
     fs::remove(g);
 }
+
+namespace {
+
+// A coupled run's output folder as `pilempm run` leaves it: three blows (stages 2, 4, 6),
+// the head's record in history.csv (its nil step's rows too).
+fs::path write_coupled_run() {
+    const fs::path dir = fs::temp_directory_path() / ("pilempm-coupled-run-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "blows.csv") << "blow,stage,start_time_s,toe_depth_before_m,set_m,enthru_J\n"
+                                        "1,2,0,5.0,0.040,1.5e6\n2,4,1.25,5.04,0.030,1.6e6\n3,6,2.5,5.07,0.020,1.4e6\n";
+    std::ofstream h(dir / "history.csv");
+    h << "time_s,stage,pile_head_force_N,pile_head_velocity_m_s\n-0.1,1,0,0\n";
+    for (int stage : {2, 4, 6})
+        for (int i = 1; i <= 3; ++i)
+            h << 1.25 * (stage / 2 - 1) + 0.01 * i << "," << stage << "," << 1000 * stage + i << "," << 0.1 * i << "\n";
+    return dir;
+}
+
+}  // namespace
+
+TEST(DrivabilityCase, CalibrationReadsTheCoupledRunsBlowsAndTheLastHeadRecord) {
+    const fs::path run = write_coupled_run();
+    const std::string body = "soil:\n  layers:\n    - {top: 0.0, bottom: 40.0, type: sand, submerged_unit_weight: 1.0e4,"
+                             " relative_density: 0.8, interface_friction_angle: 28}\n"
+                             "driving: {final_depth: 10.0}\n";
+    const std::string f = write_case(body + "calibration:\n  runs: [" + run.string() +
+                                     "]\n  fit: [srd_factor, toe_quake]\n");
+    const io::DrivabilityCase c = io::read_drivability_case(f);
+    ASSERT_EQ(c.calibration_targets.size(), 1u);
+    const auto& t = c.calibration_targets.front();
+    // The first blow left out (skip_blows 1 by default): the mean of the other two.
+    EXPECT_EQ(t.blows, 2);
+    EXPECT_NEAR(t.set, 0.025, 1e-12);
+    EXPECT_NEAR(t.depth, 5.055, 1e-12);
+    EXPECT_NEAR(t.enthru, 1.5e6, 1e-6);
+    ASSERT_EQ(t.record.time.size(), 3u);  // the last blow's rows, timed from its start
+    EXPECT_NEAR(t.record.time.front(), 0.01, 1e-12);
+    EXPECT_NEAR(t.record.force.back(), 6003.0, 1e-9);
+    EXPECT_NEAR(t.record.velocity.back(), 0.3, 1e-12);
+    EXPECT_EQ(c.calibration.fit.size(), 2u);
+
+    const std::string missing = write_case(body + "calibration:\n  runs: [" + run.string() + "-none]\n");
+    EXPECT_NE(error_of(missing).find("calibration.runs[0]"), std::string::npos) << error_of(missing);
+    EXPECT_NE(error_of(missing).find("without blows.csv"), std::string::npos) << error_of(missing);
+    const std::string too_few = write_case(body + "calibration:\n  runs: [" + run.string() + "]\n  skip_blows: 3\n");
+    EXPECT_NE(error_of(too_few).find("more blows than skip_blows"), std::string::npos) << error_of(too_few);
+    const std::string bad_fit = write_case(body + "calibration:\n  runs: [" + run.string() + "]\n  fit: [srd_factor, quake]\n");
+    EXPECT_NE(error_of(bad_fit).find("calibration.fit[1]"), std::string::npos) << error_of(bad_fit);
+    const std::string bad_case = write_case(body + "calibration:\n  runs: [" + run.string() + "]\n  soil_case: middle\n");
+    EXPECT_NE(error_of(bad_case).find("calibration.soil_case"), std::string::npos) << error_of(bad_case);
+    for (const auto& file : {f, missing, too_few, bad_fit, bad_case}) fs::remove(file);
+    fs::remove_all(run);
+}
