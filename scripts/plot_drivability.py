@@ -204,8 +204,11 @@ def clipped_blows(ax, x, y, cap, color, horizontal=True, every_point=False, **kw
 
 
 def blow_axis_limit(max_blows, refusal, hard):
-    """End of a blows-per-0.25 m axis: the data when below refusal, else a little past it."""
+    """End of a blows-per-0.25 m axis: the data when below refusal, else a little past it;
+    easy driving (below half the hard-driving count) gets an axis of its own size."""
     cap = nice_ceiling(BLOW_AXIS_FACTOR * refusal)
+    if 0.0 < max_blows <= 0.5 * hard:
+        return nice_ceiling(1.25 * max_blows), cap
     top = max(max_blows, refusal, hard) * 1.08
     return min(nice_ceiling(top), cap), cap
 
@@ -217,7 +220,7 @@ def count_lines(ax, hard, refusal, vertical=True):
             ax.axvline(value, color=color, ls=":", lw=1.3, zorder=1)
             trans = mtransforms.blended_transform_factory(ax.transData, ax.transAxes)
             ax.text(value, 0.985, f" {name} {value:g}", transform=trans, rotation=90,
-                    ha="right", va="top", fontsize=8.5, color=color,
+                    ha="right", va="top", fontsize=8.5, color=color, clip_on=True,
                     bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8})
         else:
             ax.axhline(value, color=color, ls=":", lw=1.3, zorder=1)

@@ -52,6 +52,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
                 throw std::invalid_argument(std::string(what) + " needs a grid of " + std::to_string(2 * offset) +
                                             " velocity fields");
             cut.offset = offset;
+            cut.bound();
             m.field_cuts.push_back(std::move(cut));
             offset *= 2;
         };

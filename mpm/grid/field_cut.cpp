@@ -15,7 +15,16 @@ int side(const double* c, const double* d, const double* p) {
 
 }  // namespace
 
+void FieldCut::bound() {
+    x_low = 1e300, x_high = -1e300;
+    for (std::size_t k = 0; k < vertices.size(); k += 2) {
+        x_low = std::min(x_low, vertices[k]);
+        x_high = std::max(x_high, vertices[k]);
+    }
+}
+
 bool FieldCut::crosses(const double* a, const double* b) const {
+    if (std::max(a[0], b[0]) < x_low || std::min(a[0], b[0]) > x_high) return false;
     const int n = num_vertices();
     if (n < 2) return false;
     const double lo = std::min(a[1], b[1]), hi = std::max(a[1], b[1]);

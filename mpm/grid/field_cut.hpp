@@ -24,6 +24,11 @@ struct FieldCut {
     double friction = 0.0;  // Coulomb coefficient across the slip line (tan of its friction angle)
     bool has_contact() const { return contact_segments > 0; }
 
+    // The polyline's x range once bound(): a line from a to b that stays on one side of
+    // it cannot cross, the test most points take (the soil away from a pile's wall).
+    double x_low = -1e300, x_high = 1e300;
+    void bound();  // call after setting the vertices
+
     int num_vertices() const { return static_cast<int>(vertices.size() / 2); }
     // Whether the line from a to b crosses the polyline. A point on the polyline counts as
     // being on its +x side, so a node on the cut still belongs to exactly one side.

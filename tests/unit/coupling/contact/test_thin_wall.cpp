@@ -38,6 +38,28 @@ TEST(FieldCut, ALineIsAcrossWhenItCrossesThePolylineAnOddNumberOfTimes) {
     EXPECT_FALSE(cut.crosses(below_a, below_b));
 }
 
+// The x range's early answer agrees with the full count for lines everywhere around the
+// polyline, those that start or end on it and those through its vertices included.
+TEST(FieldCut, TheBoundedCutAnswersAsTheFullCount) {
+    mpm::FieldCut full;
+    full.vertices = {1.0, 0.0, 1.0, 1.0, 1.2, 2.0, 1.1, 3.0};
+    mpm::FieldCut bounded = full;
+    bounded.bound();
+    EXPECT_EQ(bounded.x_low, 1.0);
+    EXPECT_EQ(bounded.x_high, 1.2);
+    int lines = 0, across = 0;
+    for (int i = 0; i <= 24; ++i)
+        for (int j = 0; j <= 32; ++j)
+            for (int k = 0; k <= 24; k += 3)
+                for (int l = 0; l <= 32; l += 4) {
+                    const double a[2] = {0.6 + 0.05 * i, -0.4 + 0.125 * j}, b[2] = {0.6 + 0.05 * k, -0.4 + 0.125 * l};
+                    ASSERT_EQ(bounded.crosses(a, b), full.crosses(a, b)) << a[0] << "," << a[1] << " - " << b[0] << "," << b[1];
+                    ++lines;
+                    across += full.crosses(a, b);
+                }
+    EXPECT_GT(across, lines / 10);  // many lines do cross: the comparison is not all "no"
+}
+
 namespace {
 
 constexpr double kWallMid = 0.995, kHalfThickness = 0.005, kToe = 0.2;  // outer face on r = 1
