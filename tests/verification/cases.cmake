@@ -115,3 +115,6 @@ add_test(NAME long_north_sea_drive_energy
           -DOUT=${CMAKE_BINARY_DIR}/test-output/long_north_sea_drive_energy
           -P ${CMAKE_CURRENT_SOURCE_DIR}/run_verification_case.cmake)
 set_tests_properties(long_north_sea_drive_energy PROPERTIES LABELS long TIMEOUT 7200)
+# Issue 14: the fast path calibrated by the coupled model (three coupled runs shipped as
+# data; some 5 s): each fitted set within 40 % of the coupled model's.
+pilempm_case_test(north_sea_calibrated_fast_path cases/drivability/north-sea-monopile-calibrated.yaml validation)
