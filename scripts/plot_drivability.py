@@ -549,8 +549,10 @@ def plot_calibration(out_dir, summary):
         ax.bar(x + (k - 1) * w, [1e3 * number(p, key, "calibration.points") for p in pts], w, color=color, label=label)
     ax.set_xticks(x, [f"{number(p, 'depth_m', 'calibration.points'):.2f} m" for p in pts])
     ax.set_ylabel("set per blow (mm)")
+    ax.set_ylim(0, 1.45 * max(1e3 * number(p, k, "calibration.points") for p in pts
+                              for k in ("coupled_set_m", "fast_set_before_m", "fast_set_after_m")))
     ax.set_title("Sets", fontsize=11)
-    ax.legend(fontsize=9)
+    ax.legend(fontsize=8, loc="upper right")
     ax.grid(True, axis="y", alpha=0.35)
     for a in axes[1:, -1] if force else []:
         a.axis("off")

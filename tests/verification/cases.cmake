@@ -117,4 +117,6 @@ add_test(NAME long_north_sea_drive_energy
 set_tests_properties(long_north_sea_drive_energy PROPERTIES LABELS long TIMEOUT 7200)
 # Issue 14: the fast path calibrated by the coupled model (three coupled runs shipped as
 # data; some 5 s): each fitted set within 40 % of the coupled model's.
-pilempm_case_test(north_sea_calibrated_fast_path cases/drivability/north-sea-monopile-calibrated.yaml validation)
+pilempm_case_test(north_sea_calibrated_fast_path_coarse cases/drivability/north-sea-monopile-calibrated-0.5m-grid.yaml validation)
+# The same fitted to two coupled runs on 0.125 m cells (5 and 8 m): each fitted set within 10 %.
+pilempm_case_test(north_sea_calibrated_fast_path_fine cases/drivability/north-sea-monopile-calibrated.yaml validation)
