@@ -10,16 +10,6 @@
 
 namespace pilempm::coupling {
 
-namespace {
-
-double pile_length(const fem::PileMesh& mesh) {
-    double L = 0.0;
-    for (int n = 0; n < mesh.num_nodes(); ++n) L = std::max(L, mesh.z(n));
-    return L;
-}
-
-}  // namespace
-
 double BlowOutcome::energy_error() const {
     const double accounted = energy_pile + energy_hammer + energy_soil_plastic + energy_soil_damping +
                              energy_soil_elastic;
@@ -31,7 +21,7 @@ SmithSoil make_smith_soil(const fem::ExplicitPile& pile, const ResistanceDistrib
     const auto& mesh = pile.mesh();
     if (mesh.dim != 1) throw std::invalid_argument("Smith soil needs the rod pile model");
     const int nn = mesh.num_nodes();
-    const double L = pile_length(mesh), pen = r.penetration;
+    const double L = mesh.length(), pen = r.penetration;
     const double total = r.total();
     auto dashpot = [&](double r_u, double j) {
         return p.law == DampingLaw::SmithViscous ? j * r_u
@@ -60,7 +50,7 @@ BlowOutcome simulate_blow(fem::ExplicitPile& pile, SmithSoil& soil, const fem::H
     fem::BlowStepper stepper(pile, hammer, ram_element_size, &soil);
     const auto& mesh = pile.mesh();
     const double dt = options.time_step_factor * stepper.stable_time_step();
-    const double L = pile_length(mesh);
+    const double L = mesh.length();
     const double round_trip = 2.0 * L / pile.steel().wave_speed();
     const bool prescribed = hammer.kind == fem::HammerKind::PrescribedForce;
     const double duration = options.dynamic_duration > 0.0 ? options.dynamic_duration
@@ -148,7 +138,7 @@ PenetrationResult drive_at_penetration(const fem::PileMesh& mesh, const fem::Lin
                                        const fem::HammerSpec& hammer, double ram_element_size,
                                        const DrivingOptions& options, HeadRecord* last_record) {
     fem::ExplicitPile pile(mesh, steel, {fem::ToeCondition::Free, 0.0});
-    const fem::SectionGauge head(pile.mesh(), pile_length(pile.mesh()));
+    const fem::SectionGauge head(pile.mesh(), pile.mesh().length());
     const double impedance = head.area() * steel.youngs_modulus / steel.wave_speed();
     SmithSoil soil = make_smith_soil(pile, srd, smith, impedance);
     soil.attach_dashpots(pile);
@@ -180,10 +170,10 @@ PenetrationResult drive_at_penetration(const fem::PileMesh& mesh, const fem::Lin
 double static_push_capacity(fem::ExplicitPile& pile, SmithSoil& soil, double velocity,
                             double displacement) {
     const auto& mesh = pile.mesh();
-    const fem::SectionGauge head(mesh, pile_length(mesh));
+    const fem::SectionGauge head(mesh, mesh.length());
     const double dt = 0.9 * std::min(pile.stable_time_step(), soil.stable_time_step(pile));
     // A smooth start (cosine ramp over 10 round trips) so the push rings no waves.
-    const double ramp = 20.0 * pile_length(mesh) / pile.steel().wave_speed();
+    const double ramp = 20.0 * mesh.length() / pile.steel().wave_speed();
     std::vector<double> stress(mesh.num_elements());
     double peak = 0.0, pushed = 0.0;
     for (long n = 0; pushed < displacement && n < 50'000'000; ++n) {

@@ -112,11 +112,6 @@ std::vector<Evaluation> evaluate(const DrivabilitySetup& s, const SoilCase& c, c
     return out;
 }
 
-double pile_length(const fem::PileMesh& mesh) {
-    double L = 0.0;
-    for (int i = 0; i < mesh.num_nodes(); ++i) L = std::max(L, mesh.z(i));
-    return L;
-}
 
 }  // namespace
 
@@ -150,7 +145,7 @@ CalibrationResult calibrate_fast_path(const DrivabilitySetup& s, const SoilCase&
     r.fitted = o.fit;
     r.before = starting_soil(s, c);
     r.compares_force = s.hammer.kind == fem::HammerKind::RamCushion;
-    const double round_trip = 2.0 * pile_length(s.mesh) / s.steel.wave_speed();
+    const double round_trip = 2.0 * s.mesh.length() / s.steel.wave_speed();
     const double pulse = s.hammer.kind == fem::HammerKind::PrescribedForce ? s.hammer.force.end_time() : 0.0;
     r.record_window = o.record_window > 0.0 ? o.record_window : pulse + 2.0 * round_trip;
 

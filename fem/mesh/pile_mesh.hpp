@@ -40,6 +40,12 @@ struct PileMesh {
     int num_dofs() const { return static_cast<int>(coordinates.size()); }
     int axial_dof(int node) const { return node * dim + (dim - 1); }
     double z(int node) const { return coordinates[axial_dof(node)]; }
+    // The pile's length L: its highest node (the toe at z = 0).
+    double length() const {
+        double L = 0.0;
+        for (int i = 0; i < num_nodes(); ++i) L = L > z(i) ? L : z(i);
+        return L;
+    }
     int num_elements() const;
 };
 
