@@ -12,7 +12,13 @@ pile_probes.png           with probes: each probe's radial stress over its initi
 pile_driving.png          with a drive (blows.csv): blows per 0.25 m and cumulative blows
                           against toe depth, as the drivability sheet draws them (depth
                           down), and per blow the set, the largest compression and tension
-                          in the steel and ENTHRU.
+                          in the steel, ENTHRU, and (saturated soil) the largest and smallest
+                          excess pore pressure under the toe and beside the shaft's thirds.
+drive_ledger.png          with a drive: per blow, ENTHRU, the energy the absorbing
+                          boundaries took in the blow, the pile's and the soil's energy left
+                          at its end; and the change since the first blow of the soil's mass,
+                          the grains' volume (1 - n) V and the pore water's volume n V: a
+                          long drive's drift, if it has any.
 
 Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
 """
@@ -117,7 +123,15 @@ def plot_driving(out_dir):
     b = read_columns(blows_csv, ["blow", "toe_depth_m", "set_m", "max_compression_Pa", "max_tension_Pa", "enthru_J"])
     c = read_columns(os.path.join(out_dir, "blow_count.csv"),
                      ["depth_top_m", "depth_bottom_m", "blows", "cumulative_blows"])
-    fig, axes = plt.subplots(1, 4, figsize=(13, 6.5), sharey=True)
+    header = read_header(blows_csv)
+    pore_keys = [("toe_pore_pressure_Pa", "under the toe", "k"), ("shaft_pore_pressure_upper_Pa", "shaft, upper third", "c"),
+                 ("shaft_pore_pressure_middle_Pa", "shaft, middle third", "b"),
+                 ("shaft_pore_pressure_lower_Pa", "shaft, lower third", "m")]
+    wanted = [f"{side}_{key}" for key, _, _ in pore_keys for side in ("max", "min")]
+    pores = read_columns(blows_csv, wanted) if all(k in header for k in wanted) else None
+    if pores and not any(x != 0.0 for k in wanted for x in pores[k]):
+        pores = None  # dry soil
+    fig, axes = plt.subplots(1, 5 if pores else 4, figsize=(16 if pores else 13, 6.5), sharey=True)
     for top, bottom, n in zip(c["depth_top_m"], c["depth_bottom_m"], c["blows"]):
         axes[0].plot([n, n], [top, bottom], "b-", lw=1.6)
     axes[0].set_xlabel("Blows per 0.25 m")
@@ -129,6 +143,13 @@ def plot_driving(out_dir):
     axes[3].plot([x / 1e6 for x in b["max_tension_Pa"]], b["toe_depth_m"], "m.--", label="tension")
     axes[3].set_xlabel("Largest axial stress in the blow (MPa)")
     axes[3].legend(fontsize=8)
+    if pores:
+        for key, label, colour in pore_keys:
+            axes[4].plot([x / 1e3 for x in pores["max_" + key]], b["toe_depth_m"], colour + ".-", ms=3, lw=1.0, label=label)
+            axes[4].plot([x / 1e3 for x in pores["min_" + key]], b["toe_depth_m"], colour + ".--", ms=3, lw=1.0)
+        axes[4].axvline(0.0, color="k", lw=0.6)
+        axes[4].set_xlabel("Excess pore pressure in the blow (kPa)\nlargest -, smallest --")
+        axes[4].legend(fontsize=8)
     axes[0].set_ylabel("Toe depth (m)")
     axes[0].invert_yaxis()
     for ax in axes:
@@ -140,8 +161,49 @@ def plot_driving(out_dir):
     plt.close(fig)
 
 
+def plot_drive_ledger(out_dir):
+    blows_csv = os.path.join(out_dir, "blows.csv")
+    if not os.path.exists(blows_csv) or "soil_mass_kg" not in read_header(blows_csv):
+        return
+    b = read_columns(blows_csv, ["blow", "enthru_J", "radiated_energy_J", "pile_energy_end_J",
+                                 "soil_kinetic_energy_end_J", "soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3"])
+    n = b["blow"]
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5.5))
+    for key, label, style in [("enthru_J", "ENTHRU (into the pile)", "k.-"),
+                              ("radiated_energy_J", "through the absorbing boundaries (soil, per radian)", "b.-"),
+                              ("pile_energy_end_J", "left in the pile at the blow's end", "r.-"),
+                              ("soil_kinetic_energy_end_J", "soil's kinetic energy at the end (per radian)", "g.-")]:
+        axes[0].plot(n, [max(x, 1e-3) / 1e3 for x in b[key]], style, ms=3, lw=1.0, label=label)
+    axes[0].set_yscale("log")
+    axes[0].set_ylabel("Energy (kJ)")
+    axes[0].set_title("Energy per blow")
+    grains = [v - w for v, w in zip(b["soil_volume_m3"], b["pore_water_volume_m3"])]
+    for series, label, style in [(b["soil_mass_kg"], "soil mass", "k.-"), (grains, "grains' volume (1 - n) V", "b.-")]:
+        axes[1].plot(n, [max(abs(x / series[0] - 1.0), 1e-17) for x in series], style, ms=3, lw=1.0, label=label)
+    axes[1].set_yscale("log")
+    axes[1].set_ylabel("|change since the first blow's end| (relative)")
+    water = axes[1].twinx()
+    w0 = b["pore_water_volume_m3"][0]
+    water.plot(n, [1e3 * (w - w0) for w in b["pore_water_volume_m3"]], "c.--", ms=3, lw=1.0,
+               label="pore water n V (right, litres per radian)")
+    water.set_ylabel("Pore water volume change (litres per radian)")
+    axes[1].set_title("What the drive conserves")
+    lines = axes[1].get_legend_handles_labels()
+    more = water.get_legend_handles_labels()
+    axes[1].legend(lines[0] + more[0], lines[1] + more[1], fontsize=8, loc="upper left")
+    axes[0].legend(fontsize=8)
+    for ax in axes:
+        ax.set_xlabel("Blow")
+        ax.grid(True, alpha=0.4)
+    fig.suptitle(f"Drive ledger, {len(n)} blows")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "drive_ledger.png"), dpi=120)
+    plt.close(fig)
+
+
 def plot(out_dir):
     plot_driving(out_dir)
+    plot_drive_ledger(out_dir)
     plot_load_settlement(out_dir)
     plot_tractions(out_dir)
     plot_probes(out_dir)

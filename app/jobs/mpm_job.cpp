@@ -42,7 +42,8 @@ template <int D>
 struct AttachedPile {
     std::unique_ptr<fem::ExplicitPile> pile;
     std::unique_ptr<coupling::CoupledPile> coupled;
-    AttachedPile(io::MpmRun<D>& run, coupling::StageDriver<D>& driver) {
+    // ground: the seabed in the soil's frame (ground_elevation), m.
+    AttachedPile(io::MpmRun<D>& run, coupling::StageDriver<D>& driver, double ground) {
         if constexpr (D == 2) {
             if (!run.pile.present) return;
             pile = std::make_unique<fem::ExplicitPile>(run.pile.mesh, run.pile.steel, fem::ToeSupport{});
@@ -50,7 +51,7 @@ struct AttachedPile {
                                                               run.pile.cut_fields, run.pile.toe_slip_line);
             coupled->set_head_control(run.pile.heads);
             driver.couple(coupled.get());
-            driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled));
+            driver.add_recorder(std::make_unique<coupling::PileRecorder>(*coupled, ground));
         }
     }
 };
@@ -188,9 +189,10 @@ std::vector<VerificationCheck> checks_on_grid(const io::MpmCase& c, const mpm::M
     io::StageProgress<D> progress("grid " + grid + ", ", quiet);
     coupling::StageDriver<D> driver(run.model, run.stages, run.loads, run.settings, &progress);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
+    driver.add_recorder(std::make_unique<coupling::ConservationRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
-    const AttachedPile<D> pile(run, driver);
+    const AttachedPile<D> pile(run, driver, ground_elevation(refined, run));
     stopped = driver.run(stop) == coupling::StageDriver<D>::Outcome::Stopped;
     if (stopped) return {};
     auto checks = mpm::run_mpm_verification<D>(context, run.model, run.x0, driver.history());
@@ -280,9 +282,10 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     }
     coupling::StageDriver<D> driver(m, run.stages, run.loads, run.settings, &output);
     driver.add_recorder(std::make_unique<coupling::EnergyRecorder<D>>());
+    driver.add_recorder(std::make_unique<coupling::ConservationRecorder<D>>());
     driver.add_recorder(std::make_unique<coupling::ReactionRecorder<D>>(run.reaction_nodes));
     driver.add_recorder(std::make_unique<coupling::ProbeRecorder<D>>(run.probe_points, run.model.saturated()));
-    const AttachedPile<D> attached(run, driver);
+    const AttachedPile<D> attached(run, driver, ground_elevation(c, run));
     const auto& pile = attached.pile;
     const auto& coupled = attached.coupled;
     std::unique_ptr<io::PileVtkSeries> pile_vtk;

@@ -18,7 +18,11 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
                         "max_head_displacement_m", "max_head_force_N", "max_head_velocity_m_s",
                         "enthru_J", "max_compression_Pa", "max_tension_Pa", "max_shaft_resistance_N",
                         "max_base_resistance_N", "max_toe_pore_pressure_Pa", "min_toe_pore_pressure_Pa",
-                        "plug_length_m"});
+                        "plug_length_m", "radiated_energy_J", "pile_energy_end_J", "soil_kinetic_energy_end_J",
+                        "soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3",
+                        "max_shaft_pore_pressure_upper_Pa", "min_shaft_pore_pressure_upper_Pa",
+                        "max_shaft_pore_pressure_middle_Pa", "min_shaft_pore_pressure_middle_Pa",
+                        "max_shaft_pore_pressure_lower_Pa", "min_shaft_pore_pressure_lower_Pa"});
     const auto& stage = col(history, "stage");
     const auto& time = col(history, "time_s");
     const auto& toe = col(history, "pile_toe_elevation_m");
@@ -33,6 +37,15 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
     const auto& base = col(history, "base_resistance_N");
     const auto& pore = col(history, "toe_pore_pressure_Pa");
     const auto& plug = col(history, "plug_length_m");
+    const auto& absorbed = col(history, "absorbed_energy_J");
+    const auto& pile_energy = col(history, "pile_energy_J");
+    const auto& kinetic = col(history, "kinetic_energy_J");
+    const auto& mass = col(history, "soil_mass_kg");
+    const auto& volume = col(history, "soil_volume_m3");
+    const auto& water = col(history, "pore_water_volume_m3");
+    const std::vector<double>* shaft[3] = {&col(history, "shaft_pore_pressure_upper_Pa"),
+                                           &col(history, "shaft_pore_pressure_middle_Pa"),
+                                           &col(history, "shaft_pore_pressure_lower_Pa")};
     for (const BlowStage& b : blows) {
         std::size_t first = 0;
         while (first < stage.size() && stage[first] != b.stage) ++first;
@@ -41,7 +54,7 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
         while (last + 1 < stage.size() && stage[last + 1] == b.stage) ++last;
         const std::size_t before = first > 0 ? first - 1 : first;
         double dmx = 0.0, fmx = 0.0, vmx = 0.0, emx = 0.0, cmx = 0.0, tmx = 0.0, smx = 0.0, bmx = 0.0;
-        double pmax = -1e300, pmin = 1e300;
+        double pmax = -1e300, pmin = 1e300, shaft_max[3] = {-1e300, -1e300, -1e300}, shaft_min[3] = {1e300, 1e300, 1e300};
         for (std::size_t i = first; i <= last; ++i) {
             dmx = std::max(dmx, head[i] - head[before]);
             fmx = std::max(fmx, force[i]);
@@ -53,10 +66,17 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
             bmx = std::max(bmx, base[i]);
             pmax = std::max(pmax, pore[i]);
             pmin = std::min(pmin, pore[i]);
+            for (int k = 0; k < 3; ++k) {
+                shaft_max[k] = std::max(shaft_max[k], (*shaft[k])[i]);
+                shaft_min[k] = std::min(shaft_min[k], (*shaft[k])[i]);
+            }
         }
         out.add_row({static_cast<double>(b.blow), static_cast<double>(b.stage), time[before],
                      time[last] - time[before], ground_elevation - toe[before], ground_elevation - toe[last],
-                     toe[before] - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last]});
+                     toe[before] - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last],
+                     absorbed[last] - absorbed[before], pile_energy[last], kinetic[last], mass[last], volume[last],
+                     water[last], shaft_max[0], shaft_min[0], shaft_max[1], shaft_min[1], shaft_max[2],
+                     shaft_min[2]});
     }
     return out;
 }

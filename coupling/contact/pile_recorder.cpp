@@ -23,25 +23,34 @@ ToeExtent toe_extent(const CoupledPile& pile, double cell) {
 }
 
 // In one pass over the points: the mean excess pore pressure of those within a cell of the
-// toe's annulus and a cell and a half below it (0 when dry or none there), and an open
-// pile's soil plug, from the toe to the highest point inside the wall (a quarter of a cell
-// clear of it; 0 for a closed pile).
-struct AtToe {
+// toe's annulus and a cell and a half below it, and of those within a cell outside the
+// shaft in each third of its embedded length, the upper first (0 when dry or none there);
+// and an open pile's soil plug, from the toe to the highest point inside the wall (a
+// quarter of a cell clear of it; 0 for a closed pile).
+struct AtPile {
     double pore_pressure = 0.0, plug_length = 0.0;
+    double shaft_pore_pressure[3] = {0.0, 0.0, 0.0};
 };
 
-AtToe at_toe(const mpm::MpmModel<2>& m, const ToeExtent& t, double h) {
+AtPile at_pile(const mpm::MpmModel<2>& m, const ToeExtent& t, double h, double ground) {
     const auto& p = m.particles;
     const bool wet = !p.pore_pressure.empty(), open = t.inner >= 0.25 * h;
-    double sum = 0.0, top = t.elevation;
-    int n = 0;
+    const double embedded = ground - t.elevation;
+    double sum = 0.0, top = t.elevation, shaft[3] = {0.0, 0.0, 0.0};
+    int n = 0, shaft_n[3] = {0, 0, 0};
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = p.x[2 * i], z = p.x[2 * i + 1];
         if (wet && r >= t.inner - h && r <= t.outer + h && z <= t.elevation && z >= t.elevation - 1.5 * h)
             sum += p.pore_pressure[i], ++n;
+        if (wet && embedded > 0.0 && r >= t.outer && r <= t.outer + h && z > t.elevation && z < ground) {
+            const int k = std::min(2, static_cast<int>(3.0 * (ground - z) / embedded));
+            shaft[k] += p.pore_pressure[i], ++shaft_n[k];
+        }
         if (open && r < t.inner - 0.25 * h) top = std::max(top, z);
     }
-    return {n ? sum / n : 0.0, open ? top - t.elevation : 0.0};
+    AtPile out{n ? sum / n : 0.0, open ? top - t.elevation : 0.0};
+    for (int k = 0; k < 3; ++k) out.shaft_pore_pressure[k] = shaft_n[k] ? shaft[k] / shaft_n[k] : 0.0;
+    return out;
 }
 
 }  // namespace
@@ -51,7 +60,8 @@ void PileRecorder::add_columns(std::vector<std::string>& columns) const {
                           "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
                           "max_penetration_over_cell", "pile_toe_elevation_m", "pile_head_velocity_m_s", "enthru_J",
                           "pile_max_compression_Pa", "pile_max_tension_Pa", "toe_pore_pressure_Pa", "plug_length_m", "pile_energy_J",
-                          "pile_weight_work_J"})
+                          "pile_weight_work_J", "shaft_pore_pressure_upper_Pa", "shaft_pore_pressure_middle_Pa",
+                          "shaft_pore_pressure_lower_Pa"})
         columns.push_back(c);
 }
 
@@ -78,11 +88,12 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     for (double s : stress_) compression = std::max(compression, -s), tension = std::max(tension, s);
     row.push_back(compression);
     row.push_back(tension);
-    const AtToe soil = at_toe(m, toe, h);
+    const AtPile soil = at_pile(m, toe, h, ground_);
     row.push_back(soil.pore_pressure);
     row.push_back(soil.plug_length);
     row.push_back(pile_.pile().strain_energy() + pile_.pile().kinetic_energy(pile_.pile().velocity()));
     row.push_back(pile_.weight_work());
+    for (double u : soil.shaft_pore_pressure) row.push_back(u);
 }
 
 }  // namespace pilempm::coupling

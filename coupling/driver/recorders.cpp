@@ -28,6 +28,26 @@ void EnergyRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D
 }
 
 template <int D>
+void ConservationRecorder<D>::add_columns(std::vector<std::string>& columns) const {
+    columns.insert(columns.end(), {"soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3"});
+}
+
+template <int D>
+void ConservationRecorder<D>::sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>&,
+                                     std::vector<double>& row) const {
+    const auto& p = m.particles;
+    double mass = 0.0, volume = 0.0, water = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        mass += p.mass[i];
+        volume += p.volume[i];
+        water += p.porosity[i] * p.volume[i];  // n = 0 where dry
+    }
+    row.push_back(mass);
+    row.push_back(volume);
+    row.push_back(water);
+}
+
+template <int D>
 void ReactionRecorder<D>::add_columns(std::vector<std::string>& columns) const {
     const char* axis = "xyz";
     for (int d = 0; d < D; ++d) columns.push_back(std::string("reaction_") + axis[d] + "_N");
@@ -93,6 +113,8 @@ template double elastic_energy<2>(const mpm::Particles<2>&);
 template double elastic_energy<3>(const mpm::Particles<3>&);
 template class EnergyRecorder<2>;
 template class EnergyRecorder<3>;
+template class ConservationRecorder<2>;
+template class ConservationRecorder<3>;
 template class ReactionRecorder<2>;
 template class ReactionRecorder<3>;
 template class ProbeRecorder<2>;

@@ -27,6 +27,17 @@ public:
     void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const override;
 };
 
+// What a long run must not lose: the points' mass (the grains' where the soil is coupled to
+// its water, the whole soil's where dry or undrained), their volume and the pore water's
+// volume n V; the grains' volume (1 - n) V is the difference. Per radian in axisymmetry, as
+// the soil's energies.
+template <int D>
+class ConservationRecorder final : public Recorder<D> {
+public:
+    void add_columns(std::vector<std::string>& columns) const override;
+    void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const override;
+};
+
 // Sum of the reactions of the grid nodes with prescribed velocities, per axis, N.
 template <int D>
 class ReactionRecorder final : public Recorder<D> {

@@ -1,6 +1,5 @@
 #include "mpm/materials/hardening_soil_small.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,10 +22,17 @@ double ddot(const double* a, const double* b) {
 
 double tnorm(const double* a) { return std::sqrt(ddot(a, a)); }
 
-Eigen::Matrix3d to_matrix(const double* t) {
-    Eigen::Matrix3d m;
-    m << t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2];
-    return m;
+// Frobenius norm of the product a b of two symmetric tensors [xx yy zz xy yz zx].
+double product_norm(const double* a, const double* b) {
+    const double A[3][3] = {{a[0], a[3], a[5]}, {a[3], a[1], a[4]}, {a[5], a[4], a[2]}};
+    const double B[3][3] = {{b[0], b[3], b[5]}, {b[3], b[1], b[4]}, {b[5], b[4], b[2]}};
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const double c = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+            sum += c * c;
+        }
+    return std::sqrt(sum);
 }
 
 // Isotropic elastic tangent on a tensor-shear strain: ds = lam tr(de) I + 2 G de.
@@ -34,6 +40,78 @@ void apply_elastic(double lam, double G, const double* de, double* ds) {
     const double tr = lam * (de[0] + de[1] + de[2]);
     for (int i = 0; i < 3; ++i) ds[i] = tr + 2.0 * G * de[i];
     for (int i = 3; i < 6; ++i) ds[i] = 2.0 * G * de[i];
+}
+
+// Eigenvalues d and unit eigenvectors q[i] (Cartesian components, unsorted) of a symmetric
+// tensor [xx yy zz xy yz zx], by cyclic Jacobi rotations (no trigonometry: one square root
+// and one division per rotation). In the frame of a nearby decomposition (frame) the tensor
+// is already almost diagonal, and one sweep or two reach rounding; without one, and for a
+// plane tensor (yz = zx = 0: one rotation), from the Cartesian axes. A diagonal tensor is
+// taken as it is (its eigenvalues are its entries exactly).
+void symmetric_eigen(const double* t, const double (*frame)[3], double d[3], double q[3][3]) {
+    double a01, a02, a12;
+    if (t[3] == 0.0 && t[4] == 0.0 && t[5] == 0.0) {
+        d[0] = t[0];
+        d[1] = t[1];
+        d[2] = t[2];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
+        return;
+    }
+    // A plane tensor is one rotation from the Cartesian axes: cheaper than the frame's change.
+    if (frame && !(t[4] == 0.0 && t[5] == 0.0)) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = frame[i][j];
+        double tq[3][3];  // t q_i
+        for (int i = 0; i < 3; ++i) {
+            const double* e = q[i];
+            tq[i][0] = t[0] * e[0] + t[3] * e[1] + t[5] * e[2];
+            tq[i][1] = t[3] * e[0] + t[1] * e[1] + t[4] * e[2];
+            tq[i][2] = t[5] * e[0] + t[4] * e[1] + t[2] * e[2];
+        }
+        auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+        d[0] = dot(q[0], tq[0]);
+        d[1] = dot(q[1], tq[1]);
+        d[2] = dot(q[2], tq[2]);
+        a01 = dot(q[0], tq[1]);
+        a02 = dot(q[0], tq[2]);
+        a12 = dot(q[1], tq[2]);
+    } else {
+        d[0] = t[0];
+        d[1] = t[1];
+        d[2] = t[2];
+        a01 = t[3];
+        a12 = t[4];
+        a02 = t[5];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
+    }
+    // Rotation in the (p, r) plane annihilating a_pr; x, y: the other two entries of the
+    // row/column of the third index k (a_kp, a_kr).
+    auto rotate = [&](int p, int r, double& apr, double& x, double& y) {
+        const double theta = (d[r] - d[p]) / (2.0 * apr);
+        const double tt = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(tt * tt + 1.0), sn = tt * c;
+        d[p] -= tt * apr;
+        d[r] += tt * apr;
+        apr = 0.0;
+        const double xp = c * x - sn * y, yr = sn * x + c * y;
+        x = xp;
+        y = yr;
+        for (int j = 0; j < 3; ++j) {
+            const double qp = q[p][j], qr = q[r][j];
+            q[p][j] = c * qp - sn * qr;
+            q[r][j] = sn * qp + c * qr;
+        }
+    };
+    for (int sweep = 0; sweep < 12; ++sweep) {
+        const double eps = 1e-17 * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]));
+        const bool r01 = std::abs(a01) > eps, r02 = std::abs(a02) > eps, r12 = std::abs(a12) > eps;
+        if (!r01 && !r02 && !r12) break;
+        if (r01) rotate(0, 1, a01, a02, a12);  // k = 2: a_20, a_21
+        if (std::abs(a02) > eps) rotate(0, 2, a02, a01, a12);  // k = 1: a_10, a_12
+        if (std::abs(a12) > eps) rotate(1, 2, a12, a01, a02);  // k = 0: a_01, a_02
+    }
 }
 
 }  // namespace
@@ -85,8 +163,9 @@ struct HardeningSoilSmall::Surfaces {
     bool valid;         // s3 + a clearly positive: the hardening laws are defined
     double fs, fc;      // Pa
     double scale;       // stress scale of the point for tolerances, Pa
+    double pstar, R;    // p* and the cap radius, Pa
     double ns[6], ms[6], Hs;
-    double nc[6], Hc, dpp_dlc;
+    double nc[6];       // the cap's hardening modulus: cap_modulus (a power, wanted only on the cap)
 };
 
 HardeningSoilSmall::HardeningSoilSmall(const HardeningSoilSmallParameters& p)
@@ -168,74 +247,11 @@ double HardeningSoilSmall::stiffness_factor(double s3) const {
     return std::pow(std::max(s3 + a_, par_.p_min) / pref_s_, par_.m);
 }
 
-// Cyclic Jacobi rotations (no trigonometry: one square root and one division per
-// rotation). In the frame of a nearby decomposition (hint) the tensor is already almost
-// diagonal, and one sweep or two reach rounding; without a hint, from the Cartesian axes.
-// A diagonal tensor is taken as it is (its principal stresses are its entries exactly).
+// Principal stresses in descending order, from the Jacobi decomposition (symmetric_eigen).
 HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t, const Principal* hint) const {
     Principal pr;
     double d[3], q[3][3];  // q[i]: the basis vector i (Cartesian components)
-    double a01, a02, a12;
-    if (t[3] == 0.0 && t[4] == 0.0 && t[5] == 0.0) {
-        d[0] = t[0];
-        d[1] = t[1];
-        d[2] = t[2];
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
-        a01 = a02 = a12 = 0.0;
-    } else if (hint) {
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) q[i][j] = hint->v[i][j];
-        double tq[3][3];  // t q_i
-        for (int i = 0; i < 3; ++i) {
-            const double* e = q[i];
-            tq[i][0] = t[0] * e[0] + t[3] * e[1] + t[5] * e[2];
-            tq[i][1] = t[3] * e[0] + t[1] * e[1] + t[4] * e[2];
-            tq[i][2] = t[5] * e[0] + t[4] * e[1] + t[2] * e[2];
-        }
-        auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-        d[0] = dot(q[0], tq[0]);
-        d[1] = dot(q[1], tq[1]);
-        d[2] = dot(q[2], tq[2]);
-        a01 = dot(q[0], tq[1]);
-        a02 = dot(q[0], tq[2]);
-        a12 = dot(q[1], tq[2]);
-    } else {
-        d[0] = t[0];
-        d[1] = t[1];
-        d[2] = t[2];
-        a01 = t[3];
-        a12 = t[4];
-        a02 = t[5];
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
-    }
-    // Rotation in the (p, r) plane annihilating a_pr; x, y: the other two entries of the
-    // row/column of the third index k (a_kp, a_kr).
-    auto rotate = [&](int p, int r, double& apr, double& x, double& y) {
-        const double theta = (d[r] - d[p]) / (2.0 * apr);
-        const double tt = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-        const double c = 1.0 / std::sqrt(tt * tt + 1.0), sn = tt * c;
-        d[p] -= tt * apr;
-        d[r] += tt * apr;
-        apr = 0.0;
-        const double xp = c * x - sn * y, yr = sn * x + c * y;
-        x = xp;
-        y = yr;
-        for (int j = 0; j < 3; ++j) {
-            const double qp = q[p][j], qr = q[r][j];
-            q[p][j] = c * qp - sn * qr;
-            q[r][j] = sn * qp + c * qr;
-        }
-    };
-    for (int sweep = 0; sweep < 12; ++sweep) {
-        const double eps = 1e-17 * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]));
-        const bool r01 = std::abs(a01) > eps, r02 = std::abs(a02) > eps, r12 = std::abs(a12) > eps;
-        if (!r01 && !r02 && !r12) break;
-        if (r01) rotate(0, 1, a01, a02, a12);  // k = 2: a_20, a_21
-        if (std::abs(a02) > eps) rotate(0, 2, a02, a01, a12);  // k = 1: a_10, a_12
-        if (std::abs(a12) > eps) rotate(1, 2, a12, a01, a02);  // k = 0: a_01, a_02
-    }
+    symmetric_eigen(t, hint ? hint->v : nullptr, d, q);
     // Descending order.
     int o[3] = {0, 1, 2};
     if (d[o[0]] < d[o[1]]) std::swap(o[0], o[1]);
@@ -271,27 +287,29 @@ double HardeningSoilSmall::history_ratio(double* H, const double* d, double& tan
         tangent_ratio = tangent(std::sqrt(1.5) * tnorm(H));
         return tangent_ratio;
     }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
-    es.computeDirect(to_matrix(e));
-    const Eigen::Vector3d ev = es.eigenvalues();
-    const double dmax = ev.cwiseAbs().maxCoeff();
-    Eigen::Matrix3d Hm = to_matrix(H);
+    double ev[3], v[3][3];
+    symmetric_eigen(e, nullptr, ev, v);
+    const double dmax = std::max({std::abs(ev[0]), std::abs(ev[1]), std::abs(ev[2])});
+    double Hm[6];
+    for (int k = 0; k < 6; ++k) Hm[k] = H[k];
     for (int i = 0; i < 3; ++i) {
-        if (std::abs(ev(i)) <= 1e-3 * dmax) continue;
-        const Eigen::Vector3d v = es.eigenvectors().col(i);
-        const double h = v.dot(Hm * v);
-        if (h * ev(i) < 0.0) Hm -= h * v * v.transpose();  // reversal in this direction
+        if (std::abs(ev[i]) <= 1e-3 * dmax) continue;
+        const double* u = v[i];
+        const double h = Hm[0] * u[0] * u[0] + Hm[1] * u[1] * u[1] + Hm[2] * u[2] * u[2] +
+                         2.0 * (Hm[3] * u[0] * u[1] + Hm[4] * u[1] * u[2] + Hm[5] * u[2] * u[0]);
+        if (h * ev[i] < 0.0) {  // reversal in this direction
+            Hm[0] -= h * u[0] * u[0];
+            Hm[1] -= h * u[1] * u[1];
+            Hm[2] -= h * u[2] * u[2];
+            Hm[3] -= h * u[0] * u[1];
+            Hm[4] -= h * u[1] * u[2];
+            Hm[5] -= h * u[2] * u[0];
+        }
     }
-    const Eigen::Matrix3d E = to_matrix(e);
-    const double ga = std::sqrt(3.0) * (Hm * E).norm() / ne;
-    Hm += E;
-    const double gb = std::sqrt(3.0) * (Hm * E).norm() / ne;
-    H[0] = Hm(0, 0);
-    H[1] = Hm(1, 1);
-    H[2] = Hm(2, 2);
-    H[3] = Hm(0, 1);
-    H[4] = Hm(1, 2);
-    H[5] = Hm(0, 2);
+    const double ga = std::sqrt(3.0) * product_norm(Hm, e) / ne;
+    for (int k = 0; k < 6; ++k) Hm[k] += e[k];
+    const double gb = std::sqrt(3.0) * product_norm(Hm, e) / ne;
+    for (int k = 0; k < 6; ++k) H[k] = Hm[k];
     tangent_ratio = tangent(gb);
     if (std::abs(gb - ga) <= 1e-9 * par_.gamma_07) return tangent(std::max(ga, gb));
     return (secant_stress_ratio(gb) - secant_stress_ratio(ga)) / (gb - ga);
@@ -299,7 +317,8 @@ double HardeningSoilSmall::history_ratio(double* H, const double* d, double& tan
 
 // The hyperbola's yield deviator q_y at (gamma_p, s = s3 + a), capped at q_f, with its
 // derivatives (implicit differentiation of A q q_a / (q_a - q) - B q = gamma_p).
-double HardeningSoilSmall::qy(double gp, double s, double wm, double& dq_dg, double& dq_ds, bool& on_mc) const {
+double HardeningSoilSmall::qy(double gp, double s, double wm, double& dq_dg, double& dq_ds, bool& on_mc,
+                              bool derivatives) const {
     const double qf = kf_ * s;
     if (s <= 0.0) {
         on_mc = true;
@@ -320,6 +339,7 @@ double HardeningSoilSmall::qy(double gp, double s, double wm, double& dq_dg, dou
         return qf;
     }
     on_mc = false;
+    if (!derivatives) return qh;
     const double r = qa - qh;
     const double Gq = A * qa * qa / (r * r) - B;
     const double dA = floored ? 0.0 : -par_.m * A / s, dB = floored ? 0.0 : -par_.m * B / s;
@@ -351,10 +371,12 @@ HardeningSoilSmall::Surfaces HardeningSoilSmall::surfaces(const Point& pt, const
     double dq_dg = 0.0, dq_ds = 0.0;
     bool on_mc = false;
     const double wm = pr.s3m == pr.s[2] ? pr.wm : stiffness_factor(pr.s[2]);
-    S.fs = q - qy(pt.gp, s, wm, dq_dg, dq_ds, on_mc);
+    S.fs = q - qy(pt.gp, s, wm, dq_dg, dq_ds, on_mc, grads);
     const double pstar = (pr.s[0] + pr.s[1] + pr.s[2]) / 3.0 + a_;
     const double qt = pr.s[0] + (delta_ - 1.0) * pr.s[1] - delta_ * pr.s[2];
     const double R = std::sqrt(qt * qt / (alpha_ * alpha_) + pstar * pstar);
+    S.pstar = pstar;
+    S.R = R;
     S.fc = R - pt.pp;
     if (!grads) return S;
     pr.assemble(1.0, 0.0, -1.0 - dq_ds, S.ns);
@@ -368,10 +390,14 @@ HardeningSoilSmall::Surfaces HardeningSoilSmall::surfaces(const Point& pt, const
     const double Rs = std::max(R, 1e-12 * pref_s_);
     const double k = qt / (alpha_ * alpha_ * Rs), iso = pstar / (3.0 * Rs);
     pr.assemble(k + iso, k * (delta_ - 1.0) + iso, -k * delta_ + iso, S.nc);
-    const double pp = std::max(pt.pp, par_.p_min);
-    S.dpp_dlc = std::max(pstar, 0.0) / Rs * pref_s_ / beta_ * std::pow(pp / pref_s_, par_.m);
-    S.Hc = S.dpp_dlc;
     return S;
+}
+
+// d p_p* / d lambda_cap, which is also the cap's hardening modulus (p_p* is the radius).
+double HardeningSoilSmall::cap_modulus(const Point& pt, const Surfaces& S) const {
+    const double Rs = std::max(S.R, 1e-12 * pref_s_);
+    const double pp = std::max(pt.pp, par_.p_min);
+    return std::max(S.pstar, 0.0) / Rs * pref_s_ / beta_ * std::pow(pp / pref_s_, par_.m);
 }
 
 double HardeningSoilSmall::yield_max(const Point& pt, const Surfaces& S) const {
@@ -413,8 +439,9 @@ bool HardeningSoilSmall::plastic_rate(const Point& pt, const Principal& pr, cons
     if (candidates < 0)
         candidates = (S.fs >= -tol * S.scale ? 1 : 0) | (S.fc >= -tol * std::max(pt.pp, par_.p_min) ? 2 : 0);
     const bool on_s = candidates & 1, on_c = candidates & 2;
+    const double Hc = on_c ? cap_modulus(pt, S) : 0.0;
     const double bs = ddot(S.ns, Dde), bc = ddot(S.nc, Dde);
-    const double Ass = ddot(S.ns, Dms) + S.Hs, Acc = ddot(S.nc, Dmc) + S.Hc;
+    const double Ass = ddot(S.ns, Dms) + S.Hs, Acc = ddot(S.nc, Dmc) + Hc;
     const double Asc = ddot(S.ns, Dmc), Acs = ddot(S.nc, Dms);
     double ls = 0.0, lc = 0.0;
     bool done = false;
@@ -440,7 +467,7 @@ bool HardeningSoilSmall::plastic_rate(const Point& pt, const Principal& pr, cons
     if (!done && on_s && bs > 0.0) ls = bs / Ass;  // rounding at a region boundary
     for (int i = 0; i < 6; ++i) ds[i] = Dde[i] - ls * Dms[i] - lc * Dmc[i];
     dgp = ls;
-    dpp = lc * S.dpp_dlc;
+    dpp = lc * Hc;
     return true;
 }
 
@@ -460,7 +487,8 @@ void HardeningSoilSmall::correct_drift(Point& pt, Principal& pr, double ratio, S
         apply_elastic(lam, G, S.ms, Dms);
         apply_elastic(lam, G, S.nc, Dmc);
         double ls = 0.0, lc = 0.0;
-        const double Ass = ddot(S.ns, Dms) + S.Hs, Acc = ddot(S.nc, Dmc) + S.Hc;
+        const double Hc = out_c ? cap_modulus(pt, S) : 0.0;
+        const double Ass = ddot(S.ns, Dms) + S.Hs, Acc = ddot(S.nc, Dmc) + Hc;
         if (out_s && out_c) {
             const double Asc = ddot(S.ns, Dmc), Acs = ddot(S.nc, Dms), det = Ass * Acc - Asc * Acs;
             if (det > 0.0) {
@@ -478,7 +506,7 @@ void HardeningSoilSmall::correct_drift(Point& pt, Principal& pr, double ratio, S
         }
         for (int i = 0; i < 6; ++i) pt.t[i] -= ls * Dms[i] + lc * Dmc[i];
         pt.gp = std::max(pt.gp + ls, 0.0);
-        pt.pp = std::max(pt.pp + lc * S.dpp_dlc, a_ + par_.p_min);
+        pt.pp = std::max(pt.pp + lc * Hc, a_ + par_.p_min);
         S_current = false;
     }
     pr = principal(pt.t, &pr);
@@ -490,19 +518,19 @@ void HardeningSoilSmall::correct_drift(Point& pt, Principal& pr, double ratio, S
 bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio, Principal& pr) const {
     const double tol = par_.tolerance;
     pr = principal(pt.t);
-    Surfaces S = surfaces(pt, pr, true);
+    // The gradients only once the step is known not to be elastic (most steps are).
+    Surfaces S = surfaces(pt, pr, false);
     if (!S.valid) return false;
-    bool S_current = true;
-    if (yield_max(pt, S) > tol) correct_drift(pt, pr, ratio, S, S_current);  // e.g. a set-up a hair outside
+    bool S_current = false;  // S holds the gradients at pt
+    if (yield_max(pt, S) > tol) {  // e.g. a set-up a hair outside
+        correct_drift(pt, pr, ratio, S, S_current);
+        if (!S_current) S = surfaces(pt, pr, false);
+    }
     Point trial;
     elastic_step(pt, pr, de, ratio, trial);
     Principal pr_trial = principal(trial.t, &pr);
     const Surfaces St = surfaces(trial, pr_trial, false);
     if (!St.valid) return false;
-    if (!S_current) {
-        S = surfaces(pt, pr, true);
-        S_current = true;
-    }
     const double f0 = yield_max(pt, S), f1 = yield_max(trial, St);
     // Strictly elastic only: accepting trials up to the tolerance would give a point at the
     // vertex of the shear cone (isotropic, gamma_p = 0) an elastic band of width tol, with a

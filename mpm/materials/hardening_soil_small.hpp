@@ -105,7 +105,10 @@ private:
     bool integrate(Point& pt, const double* de, double ratio, Principal& pr) const;
     void fallback(Point& pt, const double* de, double ratio) const;
     double history_ratio(double* H, const double* dstrain, double& tangent_ratio) const;
-    double qy(double gp, double s, double wm, double& dq_dg, double& dq_ds, bool& on_mc) const;
+    // derivatives false: q_y alone (dq_dg, dq_ds are then not for use).
+    double qy(double gp, double s, double wm, double& dq_dg, double& dq_ds, bool& on_mc,
+              bool derivatives = true) const;
+    double cap_modulus(const Point& pt, const Surfaces& S) const;
     double gamma_of(double q, double s) const;  // gamma_p where q_y(gamma_p, s) = min(q, q_f)
     double cap_radius(const Principal& pr) const;
 

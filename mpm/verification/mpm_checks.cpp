@@ -237,6 +237,33 @@ std::vector<VerificationCheck> hammer_energy_every_blow(const MpmCheckContext& c
                        "the drive's blows, each with its ENTHRU")};
 }
 
+// What a long run must conserve, over its whole history: the points' mass (none made or
+// lost) and the grains' volume sum (1 - n) V (each step's porosity update keeps every point's,
+// whatever its volume does), each to round-off of its first row: 1e-12 and 1e-10 relative
+// (`mass_tolerance`, `grain_volume_tolerance`). The pore water's volume n V changes by the
+// water the soil draws in or sends out: reported against its start, not judged.
+std::vector<VerificationCheck> conservation(const MpmCheckContext& c, const Table& history) {
+    const auto& mass = column(history, "soil_mass_kg");
+    const auto& volume = column(history, "soil_volume_m3");
+    const auto& water = column(history, "pore_water_volume_m3");
+    if (mass.empty()) throw std::invalid_argument("conservation: the run recorded no history");
+    auto tolerance = [&](const char* key, double otherwise) {
+        return c.parameters.count(key) ? c.parameters.at(key) : otherwise;
+    };
+    double worst_mass = 0.0, worst_grains = 0.0;
+    const double grains0 = volume.front() - water.front();
+    for (std::size_t i = 0; i < mass.size(); ++i) {
+        worst_mass = std::max(worst_mass, std::abs(mass[i] / mass.front() - 1.0));
+        worst_grains = std::max(worst_grains, std::abs((volume[i] - water[i]) / grains0 - 1.0));
+    }
+    return {make_check("soil_mass_largest_change", worst_mass, 0.0, tolerance("mass_tolerance", 1e-12), false,
+                       "largest |m / m_0 - 1| of the points' mass over the run"),
+            make_check("grain_volume_largest_change", worst_grains, 0.0, tolerance("grain_volume_tolerance", 1e-10),
+                       false, "largest |V_s / V_s0 - 1| of the grains' volume sum (1 - n) V over the run"),
+            make_report("pore_water_volume_m3", water.back(), water.front(),
+                        "the pore water's volume sum n V at the end against the start (per radian in axisymmetry)")};
+}
+
 // A rigid ram (mass m, striking at v0, no cushion) on the head of a pile of impedance Z that
 // sends no wave back before T: m dv/dt = m g - Z v, so v = a + (v0 - a) e^{-t / tau} with
 // a = m g / Z, tau = m / Z, and the ram has put Z int_0^T v^2 dt through the head by T:
@@ -394,6 +421,9 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
         else if (name == "ram_energy_into_pile") out.push_back(ram_energy(c, history));
         else if (name == "hammer_energy_every_blow") {
             auto v = hammer_energy_every_blow(c, history);
+            out.insert(out.end(), v.begin(), v.end());
+        } else if (name == "conservation") {
+            auto v = conservation(c, history);
             out.insert(out.end(), v.begin(), v.end());
         }
         else if (name == "granular_runout") {

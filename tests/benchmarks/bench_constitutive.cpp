@@ -91,6 +91,24 @@ void BM_StressUpdateHardeningSoilSmall(benchmark::State& s) {
     run(s, model, 100e3);
 }
 
+// The same at an explicit-MPM step's strain increment (1e-6): one substep on the surfaces.
+void BM_StressUpdateHardeningSoilSmallSmallIncrement(benchmark::State& s) {
+    HardeningSoilSmallParameters p;
+    p.c = 1e3;
+    p.psi = 1.0;
+    const HardeningSoilSmall model(p);
+    run(s, model, 100e3, 0.015);
+}
+
+// Unloading at that increment: the elastic branch most points of a blow take.
+void BM_StressUpdateHardeningSoilSmallUnloading(benchmark::State& s) {
+    HardeningSoilSmallParameters p;
+    p.c = 1e3;
+    p.psi = 1.0;
+    const HardeningSoilSmall model(p);
+    run(s, model, 100e3, -0.015);
+}
+
 }  // namespace
 
 BENCHMARK(BM_StressUpdateHypoplastic)->Unit(benchmark::kMillisecond);
@@ -99,3 +117,5 @@ BENCHMARK(BM_StressUpdateMohrCoulomb)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateModifiedCamClay)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateSubloadingCamClay)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateHardeningSoilSmall)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateHardeningSoilSmallSmallIncrement)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateHardeningSoilSmallUnloading)->Unit(benchmark::kMillisecond);

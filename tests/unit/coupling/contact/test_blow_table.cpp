@@ -19,13 +19,17 @@ pilempm::Table drive_history() {
     pilempm::Table h("history", {"time_s", "stage", "pile_toe_elevation_m", "pile_head_settlement_m", "pile_head_force_N",
                                  "pile_head_velocity_m_s", "enthru_J", "pile_max_compression_Pa", "pile_max_tension_Pa",
                                  "outer_shaft_resistance_N", "inner_shaft_resistance_N", "base_resistance_N",
-                                 "toe_pore_pressure_Pa", "plug_length_m"});
-    h.add_row({0.0, 1, 5.0, 0.0, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.0});
-    h.add_row({0.01, 2, 4.95, 0.06, 3e6, 2.0, 900, 150e6, 0, 40, 20, 300, 5e4, 1.0});
-    h.add_row({0.02, 2, 4.90, 0.05, 1e6, -0.5, 1000, 80e6, 30e6, 30, 10, 100, -2e4, 1.05});
-    h.add_row({1.00, 3, 4.90, 0.05, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.05});
-    h.add_row({1.01, 4, 4.85, 0.11, 2e6, 1.0, 700, 120e6, 0, 50, 20, 200, 3e4, 1.05});
-    h.add_row({1.02, 4, 4.80, 0.10, 0, 0, 800, 60e6, 10e6, 20, 10, 50, 1e4, 1.1});
+                                 "toe_pore_pressure_Pa", "plug_length_m", "absorbed_energy_J", "pile_energy_J",
+                                 "kinetic_energy_J", "soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3",
+                                 "shaft_pore_pressure_upper_Pa", "shaft_pore_pressure_middle_Pa",
+                                 "shaft_pore_pressure_lower_Pa"});
+    // The ledger's columns: absorbed energy cumulative, the rest of the moment.
+    h.add_row({0.0, 1, 5.0, 0.0, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.0, 0, 0, 0, 100, 10, 4, 1e3, 2e3, 3e3});
+    h.add_row({0.01, 2, 4.95, 0.06, 3e6, 2.0, 900, 150e6, 0, 40, 20, 300, 5e4, 1.0, 50, 800, 30, 100, 10, 4, 4e3, -5e3, 6e3});
+    h.add_row({0.02, 2, 4.90, 0.05, 1e6, -0.5, 1000, 80e6, 30e6, 30, 10, 100, -2e4, 1.05, 70, 20, 5, 100, 10.1, 4.1, -7e3, 8e3, 9e3});
+    h.add_row({1.00, 3, 4.90, 0.05, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.05, 75, 10, 0, 100, 10.05, 4.05, 0, 0, 0});
+    h.add_row({1.01, 4, 4.85, 0.11, 2e6, 1.0, 700, 120e6, 0, 50, 20, 200, 3e4, 1.05, 95, 600, 20, 100, 10.1, 4.1, 1e4, 2e4, -3e4});
+    h.add_row({1.02, 4, 4.80, 0.10, 0, 0, 800, 60e6, 10e6, 20, 10, 50, 1e4, 1.1, 115, 15, 4, 100, 10.2, 4.2, -1e4, 5e3, 4e4});
     return h;
 }
 
@@ -55,6 +59,21 @@ TEST(BlowTable, EachBlowsSetAndPeaksComeFromItsOwnRows) {
     EXPECT_DOUBLE_EQ(at(blows, "max_base_resistance_N", 0), 300.0);
     EXPECT_DOUBLE_EQ(at(blows, "min_toe_pore_pressure_Pa", 0), -2e4);
     EXPECT_DOUBLE_EQ(at(blows, "plug_length_m", 1), 1.1);
+    // The ledger: energy radiated in the blow (from the row before it), the rest at its end.
+    EXPECT_DOUBLE_EQ(at(blows, "radiated_energy_J", 0), 70.0);
+    EXPECT_DOUBLE_EQ(at(blows, "radiated_energy_J", 1), 40.0);  // 115 against 75 before it
+    EXPECT_DOUBLE_EQ(at(blows, "pile_energy_end_J", 0), 20.0);
+    EXPECT_DOUBLE_EQ(at(blows, "soil_kinetic_energy_end_J", 1), 4.0);
+    EXPECT_DOUBLE_EQ(at(blows, "soil_mass_kg", 1), 100.0);
+    EXPECT_DOUBLE_EQ(at(blows, "soil_volume_m3", 0), 10.1);
+    EXPECT_DOUBLE_EQ(at(blows, "pore_water_volume_m3", 1), 4.2);
+    // The shaft's pore pressure per third, largest and smallest over the blow's own rows.
+    EXPECT_DOUBLE_EQ(at(blows, "max_shaft_pore_pressure_upper_Pa", 0), 4e3);
+    EXPECT_DOUBLE_EQ(at(blows, "min_shaft_pore_pressure_upper_Pa", 0), -7e3);
+    EXPECT_DOUBLE_EQ(at(blows, "max_shaft_pore_pressure_middle_Pa", 0), 8e3);
+    EXPECT_DOUBLE_EQ(at(blows, "min_shaft_pore_pressure_middle_Pa", 1), 5e3);
+    EXPECT_DOUBLE_EQ(at(blows, "max_shaft_pore_pressure_lower_Pa", 1), 4e4);
+    EXPECT_DOUBLE_EQ(at(blows, "min_shaft_pore_pressure_lower_Pa", 1), -3e4);
 }
 
 TEST(BlowTable, TheBlowCountCountsEachBlowWhereItEnds) {
