@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "mpm/materials/power_near.hpp"
 #include "mpm/materials/substepping.hpp"
 
 namespace pilempm::mpm {
@@ -247,6 +248,11 @@ double HardeningSoilSmall::stiffness_factor(double s3) const {
     return std::pow(std::max(s3 + a_, par_.p_min) / pref_s_, par_.m);
 }
 
+double HardeningSoilSmall::stiffness_factor(double s3, const Principal& near) const {
+    const double x = std::max(s3 + a_, par_.p_min) / pref_s_, x0 = std::max(near.s3m + a_, par_.p_min) / pref_s_;
+    return power_near(x, x0, near.wm, par_.m);
+}
+
 // Principal stresses in descending order, from the Jacobi decomposition (symmetric_eigen).
 HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t, const Principal* hint) const {
     Principal pr;
@@ -262,8 +268,18 @@ HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t, con
         for (int j = 0; j < 3; ++j) pr.v[i][j] = q[o[i]][j];
     }
     pr.s3m = pr.s[2];
-    pr.wm = stiffness_factor(pr.s3m);
+    pr.wm = hint ? stiffness_factor(pr.s3m, *hint) : stiffness_factor(pr.s3m);
     return pr;
+}
+
+// The least principal stress alone: in closed form for a plane tensor (the out-of-plane
+// normal stress or the least of the in-plane pair), else from the decomposition.
+double HardeningSoilSmall::minor_principal(const double* t, const Principal& near) const {
+    if (t[4] == 0.0 && t[5] == 0.0) {
+        const double mean = 0.5 * (t[0] + t[1]), half = 0.5 * (t[0] - t[1]);
+        return std::min(t[2], mean - std::sqrt(half * half + t[3] * t[3]));
+    }
+    return principal(t, &near).s[2];
 }
 
 double HardeningSoilSmall::secant_stress_ratio(double g) const {
@@ -417,7 +433,8 @@ void HardeningSoilSmall::elastic_step(const Point& in, const Principal& pr_in, c
     apply_elastic(lam, G, de, ds);
     double mid[6];
     for (int i = 0; i < 6; ++i) mid[i] = in.t[i] + 0.5 * ds[i];
-    elastic_moduli(principal(mid, &pr_in), ratio, lam, G);
+    G = ratio * par_.G0_ref * stiffness_factor(minor_principal(mid, pr_in), pr_in);
+    lam = lam_over_G_ * G;
     apply_elastic(lam, G, de, ds);
     out = in;
     for (int i = 0; i < 6; ++i) out.t[i] += ds[i];
@@ -563,8 +580,9 @@ bool HardeningSoilSmall::integrate(Point& pt, const double* de, double ratio, Pr
         double d[6], ds1[6], ds2[6], dg1, dg2, dp1, dp2, Dde[6];
         for (int i = 0; i < 6; ++i) d[i] = clock.fraction() * rest[i];
         // Both stages share the substep's elastic predictor, so that a substep without
-        // plastic flow is exactly the elastic step (no jump where a surface is touched).
-        elastic_step(pt, pr, d, ratio, trial);
+        // plastic flow is exactly the elastic step (no jump where a surface is touched). A
+        // first substep over the whole increment from the start has it already: the trial.
+        if (!(alpha == 0.0 && clock.first() && clock.fraction() == 1.0)) elastic_step(pt, pr, d, ratio, trial);
         for (int i = 0; i < 6; ++i) Dde[i] = trial.t[i] - pt.t[i];
         if (!S_current) {
             S = surfaces(pt, pr, true);

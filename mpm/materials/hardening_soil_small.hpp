@@ -91,6 +91,8 @@ private:
     // (the same increment), used as the starting frame of the iteration.
     Principal principal(const double* t, const Principal* hint = nullptr) const;
     double stiffness_factor(double s3) const;  // w^m
+    double stiffness_factor(double s3, const Principal& near) const;  // the same from near's
+    double minor_principal(const double* t, const Principal& near) const;  // s3 of t
     void elastic_moduli(const Principal& pr, double ratio, double& lam, double& G) const;
     // out = in + the elastic step over de; pr_in: the decomposition of in.
     void elastic_step(const Point& in, const Principal& pr_in, const double* de, double ratio, Point& out) const;
