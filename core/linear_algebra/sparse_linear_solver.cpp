@@ -287,30 +287,46 @@ SparseMatrix::SparseMatrix(int n, const std::vector<Triplet>& triplets) : n_(n) 
             throw std::invalid_argument("SparseMatrix: entry (" + std::to_string(t.row) + ", " +
                                         std::to_string(t.col) + ") is not finite");
     }
-    // Sort the triplets' indices by (row, col), then sum runs of equal (row, col).
-    std::vector<std::size_t> order(triplets.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-        const Triplet &a = triplets[i], &b = triplets[j];
-        return a.row != b.row ? a.row < b.row : a.col < b.col;
-    });
-    row_start_.assign(static_cast<std::size_t>(n) + 1, 0);
-    columns_.reserve(triplets.size());
-    values_.reserve(triplets.size());
-    int last_row = -1, last_col = -1;
-    for (std::size_t k : order) {
-        const Triplet& t = triplets[k];
-        if (t.row == last_row && t.col == last_col) {
-            values_.back() += t.value;
-            continue;
-        }
-        columns_.push_back(t.col);
-        values_.push_back(t.value);
-        ++row_start_[static_cast<std::size_t>(t.row) + 1];
-        last_row = t.row;
-        last_col = t.col;
+    // The triplets bucketed by row (a counting sort: O(entries), where a sort of all the
+    // entries took most of a consolidation step's assembly), then each row's duplicates
+    // summed in the triplets' order through a marker per column, and its few distinct
+    // columns sorted.
+    const std::size_t rows = static_cast<std::size_t>(n);
+    std::vector<std::size_t> bucket_start(rows + 1, 0);
+    for (const Triplet& t : triplets) ++bucket_start[static_cast<std::size_t>(t.row) + 1];
+    std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
+    std::vector<std::size_t> by_row(triplets.size());
+    {
+        std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+        for (std::size_t k = 0; k < triplets.size(); ++k) by_row[next[static_cast<std::size_t>(triplets[k].row)]++] = k;
     }
-    std::partial_sum(row_start_.begin(), row_start_.end(), row_start_.begin());
+    row_start_.assign(rows + 1, 0);
+    columns_.reserve(triplets.size() / 4);
+    values_.reserve(triplets.size() / 4);
+    std::vector<int> seen_in_row(rows, -1);
+    std::vector<std::size_t> slot(rows, 0);
+    std::vector<std::pair<int, double>> row_entries;
+    for (std::size_t r = 0; r < rows; ++r) {
+        row_entries.clear();
+        for (std::size_t b = bucket_start[r]; b < bucket_start[r + 1]; ++b) {
+            const Triplet& t = triplets[by_row[b]];
+            const auto c = static_cast<std::size_t>(t.col);
+            if (seen_in_row[c] != static_cast<int>(r)) {
+                seen_in_row[c] = static_cast<int>(r);
+                slot[c] = row_entries.size();
+                row_entries.push_back({t.col, t.value});
+            } else {
+                row_entries[slot[c]].second += t.value;
+            }
+        }
+        std::sort(row_entries.begin(), row_entries.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [col, value] : row_entries) {
+            columns_.push_back(col);
+            values_.push_back(value);
+        }
+        row_start_[r + 1] = columns_.size();
+    }
 }
 
 std::size_t SparseMatrix::find(int row, int col) const {

@@ -100,11 +100,15 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
     for (const auto& mat : m_.materials) alpha = std::max(alpha, mat->p_wave_modulus());
     const double Kw = m_.water.bulk_modulus;
 
-    std::vector<core::Triplet> triplets;
+    // The triplets' buffers are the solver's, kept from step to step: some 650 entries a
+    // point (hundreds of MB on a large domain) paged in afresh each step cost as much as
+    // filling them.
+    auto& triplets = triplets_;
+    auto& flow = flow_;  // H, unscaled, to form -dt H p_n
+    triplets.clear();
+    flow.clear();
     std::vector<double> rhs(n_dof, 0.0), external(n_dof, 0.0), filled(N, 0.0), projected(N, 0.0), weight(N, 0.0), storage(N, 0.0);
     std::vector<unsigned char> has_water(N, 0);
-    std::vector<core::Triplet> flow;  // H, unscaled, to form -dt H p_n
-    triplets.reserve(static_cast<std::size_t>(n_points) * (D == 2 ? 9 * 9 * 9 : 27 * 27 * 16));
     for (long i = 0; i < n_points; ++i) {
         const Stencil<D>& s = stencil_[i];
         const int mat = p.material[i];
@@ -126,10 +130,11 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
         for (int r = 0; r < 6; ++r) sigma[r] = p.stress[6 * i + r] - (r < 3 ? pe : 0.0);
         double body[D];
         for (int d = 0; d < D; ++d) body[d] = (p.mass[i] + water_mass - buoyancy) * m_.gravity[d] + p.external_force[D * i + d];
+        double B[Stencil<D>::kMax][6][D];
+        for (int a = 0; a < s.count; ++a) strain_matrix<D>(s, a, m_.axisymmetric, B[a]);
         for (int a = 0; a < s.count; ++a) {
             const int na = s.e[a].node / fields;
-            double Ba[6][D];
-            strain_matrix<D>(s, a, m_.axisymmetric, Ba);
+            const auto& Ba = B[a];
             // Out-of-balance force: f_ext - int B^T (sigma' - p I).
             for (int d = 0; d < D; ++d) {
                 double f = s.e[a].N * body[d];
@@ -142,8 +147,7 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
             for (int d = 0; d < D; ++d) div_a[d] = Ba[0][d] + Ba[1][d] + Ba[2][d];
             for (int b = 0; b < s.count; ++b) {
                 const int nb = s.e[b].node / fields;
-                double Bb[6][D];
-                strain_matrix<D>(s, b, m_.axisymmetric, Bb);
+                const auto& Bb = B[b];
                 for (int d = 0; d < D; ++d)
                     for (int e = 0; e < D; ++e) {
                         // B_a^T D B_b with isotropic D: lambda (m.B_a)(m.B_b) + mu (2 normal + shear) terms.
@@ -255,23 +259,24 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
     if (!supported)
         throw std::runtime_error("consolidation needs the soil supported: no grid node its points reach has a "
                                  "prescribed displacement (add fixed or roller boundaries)");
-    // Eliminate the prescribed columns into the right-hand side, then the rows.
-    std::vector<core::Triplet> kept;
-    kept.reserve(triplets.size());
+    // Eliminate the prescribed columns into the right-hand side, then the rows (the kept
+    // triplets moved to the front, in order).
+    std::size_t kept = 0;
     for (const auto& t : triplets) {
         if (fixed[t.row]) continue;
         if (fixed[t.col]) {
             rhs[t.row] -= t.value * fixed_value[t.col];
             continue;
         }
-        kept.push_back(t);
+        triplets[kept++] = t;
     }
+    triplets.resize(kept);
     for (int k = 0; k < n_dof; ++k)
         if (fixed[k]) {
-            kept.push_back({k, k, 1.0});
+            triplets.push_back({k, k, 1.0});
             rhs[k] = fixed_value[k];
         }
-    const core::SparseMatrix A(n_dof, kept);
+    const core::SparseMatrix A(n_dof, triplets);
     std::vector<double> x(n_dof, 0.0);
     ConsolidationStepReport report;
     report.unknowns = n_dof;

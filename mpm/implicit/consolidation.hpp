@@ -45,6 +45,7 @@ private:
     std::vector<Stencil<D>> stencil_;
     std::vector<std::vector<int>> points_of_material_;
     std::vector<int> void_ratio_state_;  // per material (-1: none)
+    std::vector<core::Triplet> triplets_, flow_;  // the step's assembly, reused
 };
 
 extern template class ConsolidationSolver<2>;
