@@ -115,6 +115,13 @@ void symmetric_eigen(const double* t, const double (*frame)[3], double d[3], dou
     }
 }
 
+// The least eigenvalue of a plane tensor (yz = zx = 0): the out-of-plane normal entry or
+// the least of the in-plane pair, in closed form.
+double plane_minor_principal(const double* t) {
+    const double mean = 0.5 * (t[0] + t[1]), half = 0.5 * (t[0] - t[1]);
+    return std::min(t[2], mean - std::sqrt(half * half + t[3] * t[3]));
+}
+
 }  // namespace
 
 // Principal stresses (compression positive) s[0] >= s[1] >= s[2] and unit eigenvectors.
@@ -272,14 +279,10 @@ HardeningSoilSmall::Principal HardeningSoilSmall::principal(const double* t, con
     return pr;
 }
 
-// The least principal stress alone: in closed form for a plane tensor (the out-of-plane
-// normal stress or the least of the in-plane pair), else from the decomposition.
+// The least principal stress alone: plane_minor_principal for a plane tensor, else the
+// decomposition (near: a nearby one, as its frame).
 double HardeningSoilSmall::minor_principal(const double* t, const Principal& near) const {
-    if (t[4] == 0.0 && t[5] == 0.0) {
-        const double mean = 0.5 * (t[0] + t[1]), half = 0.5 * (t[0] - t[1]);
-        return std::min(t[2], mean - std::sqrt(half * half + t[3] * t[3]));
-    }
-    return principal(t, &near).s[2];
+    return t[4] == 0.0 && t[5] == 0.0 ? plane_minor_principal(t) : principal(t, &near).s[2];
 }
 
 double HardeningSoilSmall::secant_stress_ratio(double g) const {
@@ -652,7 +655,9 @@ double HardeningSoilSmall::p_wave_modulus() const {
 double HardeningSoilSmall::p_wave_modulus_at(const double* stress, const double*) const {
     double t[6];
     for (int i = 0; i < 6; ++i) t[i] = -stress[i];
-    const double G = par_.G0_ref * stiffness_factor(principal(t).s[2]);
+    // The least principal stress alone (each step asks it of every point for the step size).
+    const double s3 = t[4] == 0.0 && t[5] == 0.0 ? plane_minor_principal(t) : principal(t).s[2];
+    const double G = par_.G0_ref * stiffness_factor(s3);
     return G * (lam_over_G_ + 2.0);
 }
 
