@@ -75,21 +75,33 @@ double ground_elevation(const io::MpmCase& c, const io::MpmRun<D>& run) {
     return top + 0.5 * run.model.grid.spacing[D - 1] / c.per_cell;
 }
 
+// A drive's blows so far (blows.csv, blow_count.csv), read off the history; false when the
+// case drives no blows. Written at the end, and at every checkpoint of a run in progress.
+template <int D>
+bool write_drive_tables(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history, const fs::path& dir,
+                        Table* blow_table = nullptr, Table* count_table = nullptr) {
+    std::vector<coupling::BlowStage> blows;
+    for (std::size_t k = 0; k < c.stages.size(); ++k)
+        if (c.stages[k].blow) blows.push_back({static_cast<int>(k) + 1, c.stages[k].blow_number});
+    if (blows.empty()) return false;
+    const Table table = coupling::blow_table(history, blows, ground_elevation(c, run));
+    const Table count = coupling::blow_count_table(table);
+    io::write_csv(dir / "blows.csv", table);
+    io::write_csv(dir / "blow_count.csv", count);
+    if (blow_table) *blow_table = table;
+    if (count_table) *count_table = count;
+    return true;
+}
+
 // A drive's record (blows.csv, blow_count.csv, blow_wall_times.csv, and results.h5 with the
 // pile's mesh and final state): nothing when the case drives no blows.
 template <int D>
 void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history,
                         const io::MpmRunOutput<D>& output, const coupling::CoupledPile& coupled,
                         const fs::path& dir) {
-    std::vector<coupling::BlowStage> blows;
-    for (std::size_t k = 0; k < c.stages.size(); ++k)
-        if (c.stages[k].blow) blows.push_back({static_cast<int>(k) + 1, c.stages[k].blow_number});
-    if (blows.empty()) return;
+    Table table, count;
+    if (!write_drive_tables(c, run, history, dir, &table, &count)) return;
     const double ground = ground_elevation(c, run);
-    const Table table = coupling::blow_table(history, blows, ground);
-    const Table count = coupling::blow_count_table(table);
-    io::write_csv(dir / "blows.csv", table);
-    io::write_csv(dir / "blow_count.csv", count);
     // Wall time per blow and pause of this invocation (not in blows.csv: a resumed run's
     // tables are the uninterrupted one's to the byte).
     Table walls("blow_wall_times", {"stage", "blow", "pause", "wall_time_s"});
@@ -303,6 +315,10 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
                                 force.empty() ? std::vector<double>(pile->displacement().size(), 0.0) : force);
             });
             if (resume) pile_vtk->adopt_written_steps(restored.snapshot_times);
+            // A long drive can be followed: its tables so far beside each checkpoint.
+            output.also_at_checkpoints([&c, &run, &staged](const Table& history) {
+                write_drive_tables(c, run, history, staged.path());
+            });
         }
     }
     if (resume) {

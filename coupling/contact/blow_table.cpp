@@ -46,12 +46,19 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
     const std::vector<double>* shaft[3] = {&col(history, "shaft_pore_pressure_upper_Pa"),
                                            &col(history, "shaft_pore_pressure_middle_Pa"),
                                            &col(history, "shaft_pore_pressure_lower_Pa")};
+    // Each stage's first and last row, in one pass (a drive of hundreds of blows has
+    // hundreds of thousands of rows, and the table is rebuilt at every checkpoint).
+    std::vector<std::size_t> first_row, last_row;
+    for (std::size_t i = 0; i < stage.size(); ++i) {
+        const auto st = static_cast<std::size_t>(std::max(0.0, stage[i]));
+        if (st >= first_row.size()) first_row.resize(st + 1, stage.size()), last_row.resize(st + 1, 0);
+        if (first_row[st] == stage.size()) first_row[st] = i;
+        last_row[st] = i;
+    }
     for (const BlowStage& b : blows) {
-        std::size_t first = 0;
-        while (first < stage.size() && stage[first] != b.stage) ++first;
-        if (first == stage.size()) continue;  // not run (the drive ended before it)
-        std::size_t last = first;
-        while (last + 1 < stage.size() && stage[last + 1] == b.stage) ++last;
+        const auto st = static_cast<std::size_t>(b.stage);
+        if (st >= first_row.size() || first_row[st] == stage.size()) continue;  // not run (the drive ended before it)
+        const std::size_t first = first_row[st], last = last_row[st];
         const std::size_t before = first > 0 ? first - 1 : first;
         double dmx = 0.0, fmx = 0.0, vmx = 0.0, emx = 0.0, cmx = 0.0, tmx = 0.0, smx = 0.0, bmx = 0.0;
         double pmax = -1e300, pmin = 1e300, shaft_max[3] = {-1e300, -1e300, -1e300}, shaft_min[3] = {1e300, 1e300, 1e300};
