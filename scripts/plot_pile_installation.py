@@ -204,6 +204,8 @@ def plot_drive_ledger(out_dir):
 def plot(out_dir):
     plot_driving(out_dir)
     plot_drive_ledger(out_dir)
+    if not os.path.exists(os.path.join(out_dir, "history.csv")):
+        return 0  # a drive in progress (its working folder): its tables so far only
     plot_load_settlement(out_dir)
     plot_tractions(out_dir)
     plot_probes(out_dir)
