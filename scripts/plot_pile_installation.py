@@ -16,7 +16,7 @@ pile_driving.png          with a drive (blows.csv): blows per 0.25 m and cumulat
                           excess pore pressure under the toe and beside the shaft's thirds.
 drive_ledger.png          with a drive: per blow, ENTHRU, the energy the absorbing
                           boundaries took in the blow, the pile's and the soil's energy left
-                          at its end; and the change since the first blow of the soil's mass,
+                          at its end; and the change since the run began of the soil's mass,
                           the grains' volume (1 - n) V and the pore water's volume n V: a
                           long drive's drift, if it has any.
 
@@ -163,10 +163,11 @@ def plot_driving(out_dir):
 
 def plot_drive_ledger(out_dir):
     blows_csv = os.path.join(out_dir, "blows.csv")
-    if not os.path.exists(blows_csv) or "soil_mass_kg" not in read_header(blows_csv):
+    if not os.path.exists(blows_csv) or "grain_volume_change" not in read_header(blows_csv):
         return
     b = read_columns(blows_csv, ["blow", "enthru_J", "radiated_energy_J", "pile_energy_end_J",
-                                 "soil_kinetic_energy_end_J", "soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3"])
+                                 "soil_kinetic_energy_end_J", "soil_mass_change", "grain_volume_change",
+                                 "pore_water_volume_m3"])
     n = b["blow"]
     fig, axes = plt.subplots(1, 2, figsize=(12, 5.5))
     for key, label, style in [("enthru_J", "ENTHRU (into the pile)", "k.-"),
@@ -177,11 +178,11 @@ def plot_drive_ledger(out_dir):
     axes[0].set_yscale("log")
     axes[0].set_ylabel("Energy (kJ)")
     axes[0].set_title("Energy per blow")
-    grains = [v - w for v, w in zip(b["soil_volume_m3"], b["pore_water_volume_m3"])]
-    for series, label, style in [(b["soil_mass_kg"], "soil mass", "k.-"), (grains, "grains' volume (1 - n) V", "b.-")]:
-        axes[1].plot(n, [max(abs(x / series[0] - 1.0), 1e-17) for x in series], style, ms=3, lw=1.0, label=label)
+    for key, label, style in [("soil_mass_change", "soil mass", "k.-"),
+                              ("grain_volume_change", "grains' volume (1 - n) V", "b.-")]:
+        axes[1].plot(n, [max(abs(x), 1e-17) for x in b[key]], style, ms=3, lw=1.0, label=label)
     axes[1].set_yscale("log")
-    axes[1].set_ylabel("|change since the first blow's end| (relative)")
+    axes[1].set_ylabel("|change since the run began| (relative; 1e-17: none)")
     water = axes[1].twinx()
     w0 = b["pore_water_volume_m3"][0]
     water.plot(n, [1e3 * (w - w0) for w in b["pore_water_volume_m3"]], "c.--", ms=3, lw=1.0,

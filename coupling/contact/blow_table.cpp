@@ -19,7 +19,8 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
                         "enthru_J", "max_compression_Pa", "max_tension_Pa", "max_shaft_resistance_N",
                         "max_base_resistance_N", "max_toe_pore_pressure_Pa", "min_toe_pore_pressure_Pa",
                         "plug_length_m", "radiated_energy_J", "pile_energy_end_J", "soil_kinetic_energy_end_J",
-                        "soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3",
+                        "soil_mass_kg", "soil_volume_m3", "pore_water_volume_m3", "soil_mass_change",
+                        "grain_volume_change",
                         "max_shaft_pore_pressure_upper_Pa", "min_shaft_pore_pressure_upper_Pa",
                         "max_shaft_pore_pressure_middle_Pa", "min_shaft_pore_pressure_middle_Pa",
                         "max_shaft_pore_pressure_lower_Pa", "min_shaft_pore_pressure_lower_Pa"});
@@ -78,11 +79,15 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
                 shaft_min[k] = std::min(shaft_min[k], (*shaft[k])[i]);
             }
         }
+        // The drift since the run began, formed here in double precision: the CSV's ten
+        // digits of the volumes would hide changes below 1e-10 of them.
+        const double mass_change = mass[last] / mass.front() - 1.0;
+        const double grain_change = (volume[last] - water[last]) / (volume.front() - water.front()) - 1.0;
         out.add_row({static_cast<double>(b.blow), static_cast<double>(b.stage), time[before],
                      time[last] - time[before], ground_elevation - toe[before], ground_elevation - toe[last],
                      toe[before] - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last],
                      absorbed[last] - absorbed[before], pile_energy[last], kinetic[last], mass[last], volume[last],
-                     water[last], shaft_max[0], shaft_min[0], shaft_max[1], shaft_min[1], shaft_max[2],
+                     water[last], mass_change, grain_change, shaft_max[0], shaft_min[0], shaft_max[1], shaft_min[1], shaft_max[2],
                      shaft_min[2]});
     }
     return out;

@@ -67,6 +67,9 @@ TEST(BlowTable, EachBlowsSetAndPeaksComeFromItsOwnRows) {
     EXPECT_DOUBLE_EQ(at(blows, "soil_mass_kg", 1), 100.0);
     EXPECT_DOUBLE_EQ(at(blows, "soil_volume_m3", 0), 10.1);
     EXPECT_DOUBLE_EQ(at(blows, "pore_water_volume_m3", 1), 4.2);
+    // Drift since the history's first row: the grains' volume (soil - water) 6 -> 6 (none).
+    EXPECT_DOUBLE_EQ(at(blows, "soil_mass_change", 1), 0.0);
+    EXPECT_NEAR(at(blows, "grain_volume_change", 1), 0.0, 1e-15);
     // The shaft's pore pressure per third, largest and smallest over the blow's own rows.
     EXPECT_DOUBLE_EQ(at(blows, "max_shaft_pore_pressure_upper_Pa", 0), 4e3);
     EXPECT_DOUBLE_EQ(at(blows, "min_shaft_pore_pressure_upper_Pa", 0), -7e3);
