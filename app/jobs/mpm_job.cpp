@@ -75,13 +75,14 @@ double ground_elevation(const io::MpmCase& c, const io::MpmRun<D>& run) {
     return top + 0.5 * run.model.grid.spacing[D - 1] / c.per_cell;
 }
 
-// A drive's blows so far (blows.csv, blow_count.csv), read off the history; false when the
-// case drives no blows. Written at the end, and at every checkpoint of a run in progress.
+// A drive's blows (blows.csv, blow_count.csv) in the stages before `stages_done`, read off
+// the history; false when there are none. Written at the end, and at every checkpoint of a
+// run in progress (its finished blows).
 template <int D>
 bool write_drive_tables(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history, const fs::path& dir,
-                        Table* blow_table = nullptr, Table* count_table = nullptr) {
+                        std::size_t stages_done, Table* blow_table = nullptr, Table* count_table = nullptr) {
     std::vector<coupling::BlowStage> blows;
-    for (std::size_t k = 0; k < c.stages.size(); ++k)
+    for (std::size_t k = 0; k < std::min(stages_done, c.stages.size()); ++k)
         if (c.stages[k].blow) blows.push_back({static_cast<int>(k) + 1, c.stages[k].blow_number});
     if (blows.empty()) return false;
     const Table table = coupling::blow_table(history, blows, ground_elevation(c, run));
@@ -100,7 +101,7 @@ void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
                         const io::MpmRunOutput<D>& output, const coupling::CoupledPile& coupled,
                         const fs::path& dir) {
     Table table, count;
-    if (!write_drive_tables(c, run, history, dir, &table, &count)) return;
+    if (!write_drive_tables(c, run, history, dir, c.stages.size(), &table, &count)) return;
     const double ground = ground_elevation(c, run);
     // Wall time per blow and pause of this invocation (not in blows.csv: a resumed run's
     // tables are the uninterrupted one's to the byte).
@@ -316,8 +317,8 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             });
             if (resume) pile_vtk->adopt_written_steps(restored.snapshot_times);
             // A long drive can be followed: its tables so far beside each checkpoint.
-            output.also_at_checkpoints([&c, &run, &staged](const Table& history) {
-                write_drive_tables(c, run, history, staged.path());
+            output.also_at_checkpoints([&c, &run, &staged](const coupling::DriverState& state, const Table& history) {
+                write_drive_tables(c, run, history, staged.path(), static_cast<std::size_t>(state.stage));
             });
         }
     }

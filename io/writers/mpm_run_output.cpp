@@ -36,7 +36,7 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
     if (body_) run.body = body_->state();
     write_run_checkpoint<D>(checkpoint_path(), model.particles, run);
     staged_.keep_if_failed();
-    if (also_at_checkpoint_) also_at_checkpoint_(history);
+    if (also_at_checkpoint_) also_at_checkpoint_(state, history);
 }
 
 template <int D>

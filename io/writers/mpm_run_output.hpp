@@ -35,8 +35,11 @@ public:
     void set_body(const coupling::CoupledBody<D>* body) { body_ = body; }
     // Called at each snapshot after the particles' (the pile's own VTK series).
     void also_at_snapshots(std::function<void(double)> write) { also_ = std::move(write); }
-    // Called after each checkpoint with the history so far (a drive's tables, to follow it).
-    void also_at_checkpoints(std::function<void(const Table&)> write) { also_at_checkpoint_ = std::move(write); }
+    // Called after each checkpoint with the driver's state and the history so far (a drive's
+    // tables, to follow it).
+    void also_at_checkpoints(std::function<void(const coupling::DriverState&, const Table&)> write) {
+        also_at_checkpoint_ = std::move(write);
+    }
 
     void snapshot(double time, const mpm::MpmModel<D>& model) override;
     void checkpoint(const coupling::DriverState& state, const mpm::MpmModel<D>& model,
@@ -63,7 +66,7 @@ private:
     StageProgress<D> progress_;
     const coupling::CoupledBody<D>* body_ = nullptr;
     std::function<void(double)> also_;
-    std::function<void(const Table&)> also_at_checkpoint_;
+    std::function<void(const coupling::DriverState&, const Table&)> also_at_checkpoint_;
     std::vector<StageWallTime> walls_;
     double stage_began_ = 0.0;  // s on the steady clock
 };

@@ -8,12 +8,14 @@
 // and for a stop during a verification's grid-sequence reruns.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -66,8 +68,10 @@ void expect_same_outputs(const fs::path& whole, const fs::path& split) {
 }
 
 // Runs `case_file` whole, and interrupted by `signal` after `steps` steps (exit 130, the
-// folder kept as .incomplete) then resumed; compares what the two wrote.
-void check_resume(const fs::path& dir, const std::string& case_file, int signal, long steps) {
+// folder kept as .incomplete; `stopped` looks into it) then resumed; compares what the two
+// wrote.
+void check_resume(const fs::path& dir, const std::string& case_file, int signal, long steps,
+                  const std::function<void(const fs::path&)>& stopped = {}) {
     const std::string exe = PILEMPM_EXECUTABLE;
     ASSERT_EQ(run(exe + " run " + case_file + " --out " + (dir / "whole").string() + " --quiet"), 0);
     ASSERT_EQ(run("PILEMPM_INTERRUPT_AFTER_STEPS=" + std::to_string(steps) + " PILEMPM_INTERRUPT_SIGNAL=" +
@@ -76,6 +80,7 @@ void check_resume(const fs::path& dir, const std::string& case_file, int signal,
               130);
     EXPECT_FALSE(fs::exists(dir / "split"));
     ASSERT_TRUE(fs::exists(dir / "split.incomplete" / "checkpoint.h5"));
+    if (stopped) stopped(dir / "split.incomplete");
     ASSERT_EQ(run(exe + " run " + case_file + " --out " + (dir / "split").string() + " --quiet --resume"), 0);
     EXPECT_FALSE(fs::exists(dir / "split.incomplete"));
     expect_same_outputs(dir / "whole", dir / "split");
@@ -214,7 +219,12 @@ TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneW
     }
     const fs::path file = dir / "drive.yaml";
     std::ofstream(file) << yaml;
-    check_resume(dir, file.string(), SIGTERM, 450);
+    // The stopped drive's folder has its blows so far: the first, and its count.
+    check_resume(dir, file.string(), SIGTERM, 450, [](const fs::path& incomplete) {
+        const std::string blows = read_file(incomplete / "blows.csv");
+        EXPECT_EQ(std::count(blows.begin(), blows.end(), '\n'), 2) << blows;  // header and blow 1
+        EXPECT_TRUE(fs::exists(incomplete / "blow_count.csv"));
+    });
     EXPECT_TRUE(fs::exists(dir / "whole" / "blows.csv"));
     fs::remove_all(dir);
 }
