@@ -59,6 +59,8 @@ void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, cons
     if (!quiet_ && spec.blow && !report.stopped && body_)
         std::printf("%s: toe at %.4f m, %ld steps, %.1f s\n", spec.name.c_str(), body_->toe_elevation(), report.steps,
                     now - stage_began_);
+    if (!quiet_ && spec.drive >= 0 && spec.consolidation && !report.stopped)  // a pause: its cost beside the blows'
+        std::printf("%s: %ld implicit steps, %.1f s\n", spec.name.c_str(), report.steps, now - stage_began_);
     if (!quiet_ && spec.quasi_static && !report.stopped)
         std::printf("stage '%s': %ld steps, unbalanced force ratio %.3g (tolerance %.3g)%s\n", spec.name.c_str(),
                     report.steps, report.unbalanced_ratio, spec.tolerance,
