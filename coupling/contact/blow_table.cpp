@@ -56,11 +56,19 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
         if (first_row[st] == stage.size()) first_row[st] = i;
         last_row[st] = i;
     }
+    double last_blow_toe = 0.0;  // where the last blow left the toe
+    bool after_a_blow = false;
     for (const BlowStage& b : blows) {
         const auto st = static_cast<std::size_t>(b.stage);
         if (st >= first_row.size() || first_row[st] == stage.size()) continue;  // not run (the drive ended before it)
         const std::size_t first = first_row[st], last = last_row[st];
         const std::size_t before = first > 0 ? first - 1 : first;
+        // The set counts from where the last blow left the toe, as a set is read in the
+        // field: the pause's settlement goes to the blow after it, and the sets add up to
+        // the drive's penetration.
+        const double toe_before = after_a_blow ? last_blow_toe : toe[before];
+        last_blow_toe = toe[last];
+        after_a_blow = true;
         double dmx = 0.0, fmx = 0.0, vmx = 0.0, emx = 0.0, cmx = 0.0, tmx = 0.0, smx = 0.0, bmx = 0.0;
         double pmax = -1e300, pmin = 1e300, shaft_max[3] = {-1e300, -1e300, -1e300}, shaft_min[3] = {1e300, 1e300, 1e300};
         for (std::size_t i = first; i <= last; ++i) {
@@ -84,8 +92,8 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
         const double mass_change = mass[last] / mass.front() - 1.0;
         const double grain_change = (volume[last] - water[last]) / (volume.front() - water.front()) - 1.0;
         out.add_row({static_cast<double>(b.blow), static_cast<double>(b.stage), time[before],
-                     time[last] - time[before], ground_elevation - toe[before], ground_elevation - toe[last],
-                     toe[before] - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last],
+                     time[last] - time[before], ground_elevation - toe_before, ground_elevation - toe[last],
+                     toe_before - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last],
                      absorbed[last] - absorbed[before], pile_energy[last], kinetic[last], mass[last], volume[last],
                      water[last], mass_change, grain_change, shaft_max[0], shaft_min[0], shaft_max[1], shaft_min[1], shaft_max[2],
                      shaft_min[2]});

@@ -17,7 +17,8 @@ struct BlowStage {
 };
 
 // One row per blow that ran. ground_elevation: the seabed (m, the soil's frame), depths are
-// below it. The state before a blow is the history's last row before its first.
+// below it. The state before a blow is the history's last row before its first; its toe
+// depth before, the depth the last blow left it at (the set takes the pause's settlement).
 Table blow_table(const Table& history, const std::vector<BlowStage>& blows, double ground_elevation);
 
 // From blow_table's rows: per interval of toe depth (m, from the depth of the first blow's

@@ -187,6 +187,9 @@ void CoupledPile::follow_soil(const mpm::MpmModel<2>& m, const std::vector<doubl
         weight += w;
     }
     if (weight > 0.0) pile_.translate_axially(moved / weight);
+    // The surface with it: the pause's history records where the pile is (the next blow's
+    // first step places it anyway).
+    place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);
 }
 
 double CoupledPile::max_speed() const {
@@ -206,8 +209,9 @@ std::array<double, 2> CoupledPile::momentum() const {
 
 std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() const {
     std::vector<double> segment(contact_.segment().begin(), contact_.segment().end());
-    return {{"pile_displacement", pile_.displacement()},
+    std::vector<std::pair<std::string, std::vector<double>>> out = {{"pile_displacement", pile_.displacement()},
             {"pile_velocity", pile_.velocity()},
+            {"pile_internal_force", pile_.internal_force()},
             {"contact_tangential_force", contact_.tangential_force()},
             {"contact_segment", segment},
             {"contact_overlap", contact_.overlap()},
@@ -216,6 +220,8 @@ std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() co
             {"pile_enthru", {enthru_, static_cast<double>(enthru_stage_)}},
             {"hammer_chain", chain_ ? chain_->state() : std::vector<double>{}},
             {"contact_time_step", {contact_dt_}}};
+    for (auto& entry : contact_.outputs()) out.push_back(std::move(entry));
+    return out;
 }
 
 void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<double>>>& arrays) {
@@ -224,7 +230,10 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
             if (key == name) return values;
         throw std::runtime_error("the checkpoint has no " + name + " (written without the pile?)");
     };
-    pile_.restore(find("pile_displacement"), find("pile_velocity"));
+    bool has_force = false;  // checkpoints before 2026-12-06 lack it
+    for (const auto& [key, values] : arrays) has_force = has_force || key == "pile_internal_force";
+    pile_.restore(find("pile_displacement"), find("pile_velocity"),
+                  has_force ? find("pile_internal_force") : std::vector<double>{});
     const auto& seg = find("contact_segment");
     contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()), find("contact_overlap"),
                      find("contact_started").at(0) != 0.0);
@@ -240,6 +249,15 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
         chain_->restore(chain);
     }
     contact_dt_ = find("contact_time_step").at(0);
+    // The contact's last outputs (checkpoints before 2026-12-06 lack them: left empty).
+    bool outputs = false;
+    for (const auto& [key, values] : arrays) outputs = outputs || key == "contact_totals";
+    if (outputs)
+        contact_.restore_outputs(find("contact_nodal_force"), find("contact_segment_force"), find("contact_totals"),
+                                 find("contact_touches"));
+    // The surface where the restored pile is: a run resumed in a pause records its toe from
+    // it before any step places it (it recorded the toe at 0 m).
+    place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);
 }
 
 }  // namespace pilempm::coupling

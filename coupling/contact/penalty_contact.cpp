@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace pilempm::coupling {
 
@@ -251,6 +252,41 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         ++totals_.points_in_contact;
         totals_.max_penetration = std::max(totals_.max_penetration, -gap);
     }
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> PenaltyContact::outputs() const {
+    std::vector<double> totals = {totals_.force_on_master[0], totals_.force_on_master[1]};
+    for (const auto& side : totals_.force_by_side) totals.insert(totals.end(), side.begin(), side.end());
+    totals.insert(totals.end(), {totals_.max_penetration, static_cast<double>(totals_.points_in_contact),
+                                 static_cast<double>(totals_.points_inside), totals_.stable_time_step});
+    std::vector<double> touches;
+    touches.reserve(5 * touches_.size());
+    for (const ContactTouch& t : touches_)
+        touches.insert(touches.end(), {static_cast<double>(t.point), t.normal[0], t.normal[1], t.on_surface[0],
+                                       t.on_surface[1]});
+    return {{"contact_nodal_force", nodal_force_},
+            {"contact_segment_force", segment_force_},
+            {"contact_totals", totals},
+            {"contact_touches", touches}};
+}
+
+void PenaltyContact::restore_outputs(const std::vector<double>& nodal_force, const std::vector<double>& segment_force,
+                                     const std::vector<double>& totals, const std::vector<double>& touches) {
+    if (totals.size() != 16 || touches.size() % 5 != 0)
+        throw std::runtime_error("the checkpoint's contact totals or touches are malformed");
+    nodal_force_ = nodal_force;
+    segment_force_ = segment_force;
+    totals_.force_on_master = {totals[0], totals[1]};
+    for (std::size_t k = 0; k < totals_.force_by_side.size(); ++k)
+        totals_.force_by_side[k] = {totals[2 + 2 * k], totals[3 + 2 * k]};
+    totals_.max_penetration = totals[12];
+    totals_.points_in_contact = static_cast<int>(totals[13]);
+    totals_.points_inside = static_cast<int>(totals[14]);
+    totals_.stable_time_step = totals[15];
+    touches_.clear();
+    for (std::size_t k = 0; k < touches.size(); k += 5)
+        touches_.push_back({static_cast<long>(touches[k]), {touches[k + 1], touches[k + 2]},
+                            {touches[k + 3], touches[k + 4]}});
 }
 
 }  // namespace pilempm::coupling

@@ -9,6 +9,8 @@
 #include <array>
 #include <memory>
 #include <utility>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "coupling/contact/contact_surface.hpp"
@@ -95,6 +97,11 @@ public:
         overlap_ = std::move(overlap);
         started_ = started;
     }
+    // The last step's outputs (forces, totals, touches) as flat arrays and back: a run
+    // stopped in a pause, where no step computes them, resumes with them as they were.
+    std::vector<std::pair<std::string, std::vector<double>>> outputs() const;
+    void restore_outputs(const std::vector<double>& nodal_force, const std::vector<double>& segment_force,
+                         const std::vector<double>& totals, const std::vector<double>& touches);
 
 private:
     void bin_segments(const ContactSurface& s, double margin);

@@ -99,12 +99,17 @@ ExplicitPile::ExplicitPile(PileMesh mesh, const LinearElasticSteel& steel, ToeSu
     }
 }
 
-void ExplicitPile::restore(const std::vector<double>& u, const std::vector<double>& v) {
+void ExplicitPile::restore(const std::vector<double>& u, const std::vector<double>& v,
+                           const std::vector<double>& f_int) {
     if (u.size() != u_.size() || v.size() != v_.size())
         throw std::invalid_argument("pile state of " + std::to_string(u.size()) + " DOFs for a mesh of " +
                                     std::to_string(u_.size()));
     u_ = u;
     v_ = v;
+    if (f_int.size() == u_.size())
+        f_int_ = f_int;
+    else
+        compute_internal_force();
 }
 
 void ExplicitPile::compute_internal_force() {

@@ -87,7 +87,9 @@ public:
     // Moves the whole pile axially by delta (m, up positive) without straining it.
     void translate_axially(double delta);
     // A checkpoint's state back: u_n and v_{n-1/2}, a value per DOF each.
-    void restore(const std::vector<double>& u, const std::vector<double>& v);
+    // f_int: the internal force as the run had it (strain_energy() reads it until the next
+    // step computes it); empty: computed from u.
+    void restore(const std::vector<double>& u, const std::vector<double>& v, const std::vector<double>& f_int = {});
 
 private:
     // v_{n+1/2} = (keep v_{n-1/2} + f) / scale, with keep and scale = m / dt -+ c / 2.

@@ -254,6 +254,23 @@ TEST(MpmResume, ADriveAfterADrainedNilStepOnAHeldBaseStoppedAsItsBlowSettlesResu
     fs::remove_all(dir);
 }
 
+// The same drive stopped in its first pause: the pile's surface (where the history reads
+// the toe) comes back placed, not at 0 m as before, so the tables match.
+TEST(MpmResume, ADriveStoppedInAPauseResumedWritesWhatAnUninterruptedOneWrites) {
+    const fs::path dir = fresh_dir("drive-pause");
+    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
+    for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
+                            {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}}) {
+        const auto at = yaml.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        yaml.replace(at, from.size(), to);
+    }
+    const fs::path file = dir / "drive.yaml";
+    std::ofstream(file) << yaml;
+    check_resume(dir, file.string(), SIGTERM, 379);  // the first blow some 375 steps, its pause 8
+    fs::remove_all(dir);
+}
+
 TEST(MpmResume, SaturatedRunStoppedInItsConsolidationPauseResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("pause");
     const fs::path file = dir / "blow-pause-blow.yaml";

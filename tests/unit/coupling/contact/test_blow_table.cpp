@@ -27,7 +27,7 @@ pilempm::Table drive_history() {
     h.add_row({0.0, 1, 5.0, 0.0, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.0, 0, 0, 0, 100, 10, 4, 1e3, 2e3, 3e3});
     h.add_row({0.01, 2, 4.95, 0.06, 3e6, 2.0, 900, 150e6, 0, 40, 20, 300, 5e4, 1.0, 50, 800, 30, 100, 10, 4, 4e3, -5e3, 6e3});
     h.add_row({0.02, 2, 4.90, 0.05, 1e6, -0.5, 1000, 80e6, 30e6, 30, 10, 100, -2e4, 1.05, 70, 20, 5, 100, 10.1, 4.1, -7e3, 8e3, 9e3});
-    h.add_row({1.00, 3, 4.90, 0.05, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.05, 75, 10, 0, 100, 10.05, 4.05, 0, 0, 0});
+    h.add_row({1.00, 3, 4.89, 0.06, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.05, 75, 10, 0, 100, 10.05, 4.05, 0, 0, 0});
     h.add_row({1.01, 4, 4.85, 0.11, 2e6, 1.0, 700, 120e6, 0, 50, 20, 200, 3e4, 1.05, 95, 600, 20, 100, 10.1, 4.1, 1e4, 2e4, -3e4});
     h.add_row({1.02, 4, 4.80, 0.10, 0, 0, 800, 60e6, 10e6, 20, 10, 50, 1e4, 1.1, 115, 15, 4, 100, 10.2, 4.2, -1e4, 5e3, 4e4});
     return h;
@@ -50,7 +50,10 @@ TEST(BlowTable, EachBlowsSetAndPeaksComeFromItsOwnRows) {
     EXPECT_DOUBLE_EQ(at(blows, "toe_depth_before_m", 0), 1.0);
     EXPECT_NEAR(at(blows, "set_m", 0), 0.1, 1e-12);
     EXPECT_NEAR(at(blows, "toe_depth_m", 1), 1.2, 1e-12);
-    EXPECT_NEAR(at(blows, "max_head_displacement_m", 1), 0.06, 1e-12);  // 0.11 against 0.05 before it
+    // The pause settled the toe 0.01 m: the next blow's set takes it (from 4.90, not 4.89).
+    EXPECT_NEAR(at(blows, "toe_depth_before_m", 1), 1.1, 1e-12);
+    EXPECT_NEAR(at(blows, "set_m", 1), 0.1, 1e-12);
+    EXPECT_NEAR(at(blows, "max_head_displacement_m", 1), 0.05, 1e-12);  // 0.11 against 0.06 before it
     EXPECT_DOUBLE_EQ(at(blows, "max_head_force_N", 0), 3e6);
     EXPECT_DOUBLE_EQ(at(blows, "enthru_J", 0), 1000.0);
     EXPECT_DOUBLE_EQ(at(blows, "max_compression_Pa", 0), 150e6);
