@@ -230,10 +230,12 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
             if (key == name) return values;
         throw std::runtime_error("the checkpoint has no " + name + " (written without the pile?)");
     };
-    bool has_force = false;  // checkpoints before 2026-12-06 lack it
-    for (const auto& [key, values] : arrays) has_force = has_force || key == "pile_internal_force";
+    // What checkpoints before 2026-12-06 lack: the pile's internal force, the contact's outputs.
+    auto has = [&](const std::string& name) {
+        return std::any_of(arrays.begin(), arrays.end(), [&](const auto& entry) { return entry.first == name; });
+    };
     pile_.restore(find("pile_displacement"), find("pile_velocity"),
-                  has_force ? find("pile_internal_force") : std::vector<double>{});
+                  has("pile_internal_force") ? find("pile_internal_force") : std::vector<double>{});
     const auto& seg = find("contact_segment");
     contact_.restore(find("contact_tangential_force"), std::vector<int>(seg.begin(), seg.end()), find("contact_overlap"),
                      find("contact_started").at(0) != 0.0);
@@ -249,10 +251,7 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
         chain_->restore(chain);
     }
     contact_dt_ = find("contact_time_step").at(0);
-    // The contact's last outputs (checkpoints before 2026-12-06 lack them: left empty).
-    bool outputs = false;
-    for (const auto& [key, values] : arrays) outputs = outputs || key == "contact_totals";
-    if (outputs)
+    if (has("contact_totals"))
         contact_.restore_outputs(find("contact_nodal_force"), find("contact_segment_force"), find("contact_totals"),
                                  find("contact_touches"));
     // The surface where the restored pile is: a run resumed in a pause records its toe from

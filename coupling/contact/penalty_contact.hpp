@@ -8,7 +8,6 @@
 // (times `ring`: the master integrates the whole ring, the soil is per radian).
 #include <array>
 #include <memory>
-#include <utility>
 #include <string>
 #include <utility>
 #include <vector>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace pilempm::coupling {
@@ -32,8 +33,23 @@ void StageDriver<D>::add_recorder(std::unique_ptr<Recorder<D>> recorder) {
 
 template <int D>
 void StageDriver<D>::resume(const DriverState& state, const mpm::SolverState& solver, Table history) {
-    if (history.columns != history_.columns)
-        throw std::runtime_error("the checkpoint's history has other columns than this run records");
+    if (history.columns != history_.columns) {
+        // A checkpoint of an earlier build that recorded fewer columns: its rows go on with
+        // the new columns empty (NaN) up to the resume, so a long campaign survives an
+        // upgrade. A column it has that this run does not record is an error.
+        const std::size_t rows = history.rows();
+        Table merged(history_.name, history_.columns);
+        for (std::size_t c = 0; c < merged.columns.size(); ++c) {
+            const auto it = std::find(history.columns.begin(), history.columns.end(), merged.columns[c]);
+            merged.data[c] = it != history.columns.end()
+                                 ? history.data[static_cast<std::size_t>(it - history.columns.begin())]
+                                 : std::vector<double>(rows, std::numeric_limits<double>::quiet_NaN());
+        }
+        for (const auto& name : history.columns)
+            if (std::find(merged.columns.begin(), merged.columns.end(), name) == merged.columns.end())
+                throw std::runtime_error("the checkpoint's history records " + name + ", which this run does not");
+        history = std::move(merged);
+    }
     state_ = state;
     solver_.restore(solver);
     history_ = std::move(history);

@@ -253,6 +253,52 @@ void check_resume(long stop_after) {
 TEST(StageDriver, StoppedInAQuasiStaticStageAndResumedEqualsUninterrupted) { check_resume(150); }
 TEST(StageDriver, StoppedInADynamicStageAndResumedEqualsUninterrupted) { check_resume(420); }
 
+// A checkpoint of an earlier build that recorded fewer columns (here: no probes) resumes
+// with this build's: the old rows keep their values, the new columns are NaN up to the
+// resume and recorded after it; a column this run does not record is an error.
+TEST(StageDriver, ACheckpointWithFewerColumnsResumesWithTheNewOnesEmpty) {
+    mpm::MpmModel<2> first_model = column_with_absorbing_side();
+    MemoryCheckpoint saved;
+    StageDriver<2> first(first_model, settle_then_blow(), top_pressure(first_model, 20e3, 0.005, {1}), {}, &saved);
+    first.add_recorder(std::make_unique<EnergyRecorder<2>>());
+    ::setenv("PILEMPM_INTERRUPT_AFTER_STEPS", "150", 1);
+    ::unsetenv("PILEMPM_INTERRUPT_SIGNAL");
+    {
+        const StopRequest stop(true);
+        ASSERT_EQ(first.run(&stop), StageDriver<2>::Outcome::Stopped);
+    }
+    ::unsetenv("PILEMPM_INTERRUPT_AFTER_STEPS");
+    const std::size_t old_rows = saved.history.rows();
+    ASSERT_GT(old_rows, 0u);
+
+    mpm::MpmModel<2> resumed_model = column_with_absorbing_side();
+    const auto loads = top_pressure(resumed_model, 20e3, 0.005, {1});
+    resumed_model.particles = saved.particles;
+    StageDriver<2> resumed(resumed_model, settle_then_blow(), loads, {});
+    add_recorders(resumed);  // energy and probes
+    resumed.resume(saved.state, saved.solver, saved.history);
+    ASSERT_EQ(resumed.run(), StageDriver<2>::Outcome::Completed);
+    const Table& h = resumed.history();
+    const auto column = [&](const std::string& name) -> const std::vector<double>& {
+        return h.data[static_cast<std::size_t>(std::find(h.columns.begin(), h.columns.end(), name) - h.columns.begin())];
+    };
+    const auto& probe = column("probe0_stress_vertical_Pa");
+    const auto& kinetic = column("kinetic_energy_J");
+    ASSERT_GT(h.rows(), old_rows);
+    EXPECT_TRUE(std::isnan(probe[old_rows - 1]));
+    EXPECT_FALSE(std::isnan(probe[old_rows]));
+    const auto at = std::find(saved.history.columns.begin(), saved.history.columns.end(), "kinetic_energy_J");
+    const auto& saved_kinetic = saved.history.data[static_cast<std::size_t>(at - saved.history.columns.begin())];
+    for (std::size_t r = 0; r < old_rows; ++r) ASSERT_EQ(kinetic[r], saved_kinetic[r]) << "row " << r;
+
+    Table unknown = saved.history;
+    unknown.columns.push_back("a_column_no_recorder_writes");
+    unknown.data.emplace_back(old_rows, 0.0);
+    StageDriver<2> refused(resumed_model, settle_then_blow(), loads, {});
+    add_recorders(refused);
+    EXPECT_THROW(refused.resume(saved.state, saved.solver, unknown), std::runtime_error);
+}
+
 namespace {
 
 // A body that sinks `set` metres on the first step of every blow and is otherwise at rest.
