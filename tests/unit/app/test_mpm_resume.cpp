@@ -18,6 +18,7 @@
 #include <functional>
 #include <set>
 #include <sstream>
+#include <vector>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -205,20 +206,30 @@ TEST(MpmResume, ARamOnTheCoupledPileStoppedAsItRidesTheHeadResumedWritesWhatAnUn
     check_blow_resume("coupled-ram", "coupled-ram-blow-energy.yaml", SIGINT);
 }
 
+// The driving verification cut to two blows of 10 ms (some 375 steps each), with `more`
+// edits on top, written into dir as `name`; its path.
+fs::path two_blow_drive(const fs::path& dir, const std::string& name,
+                        const std::vector<std::pair<std::string, std::string>>& more = {}) {
+    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
+    std::vector<std::pair<std::string, std::string>> edits = {
+        {"blows: 3", "blows: 2"}, {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}};
+    edits.insert(edits.end(), more.begin(), more.end());
+    for (const auto& [from, to] : edits) {
+        const auto at = yaml.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) yaml.replace(at, from.size(), to);
+    }
+    const fs::path file = dir / name;
+    std::ofstream(file) << yaml;
+    return file;
+}
+
 // A drive of two blows with a consolidation pause between them (the driving verification
 // with 10 ms blows, some 375 steps each), stopped in the second blow: the driver's
 // blow bookkeeping (where the blow began, the refusal count) comes back with the rest.
 TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("drive");
-    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
-    for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
-                            {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}}) {
-        const auto at = yaml.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        yaml.replace(at, from.size(), to);
-    }
-    const fs::path file = dir / "drive.yaml";
-    std::ofstream(file) << yaml;
+    const fs::path file = two_blow_drive(dir, "drive.yaml");
     // The stopped drive's folder has its blows so far: the first, and its count.
     check_resume(dir, file.string(), SIGTERM, 450, [](const fs::path& incomplete) {
         const std::string blows = read_file(incomplete / "blows.csv");
@@ -235,19 +246,11 @@ TEST(MpmResume, ADriveStoppedInItsSecondBlowResumedWritesWhatAnUninterruptedOneW
 // the water held hydrostatic then coupled, and the settling switch come back exactly.
 TEST(MpmResume, ADriveAfterADrainedNilStepOnAHeldBaseStoppedAsItsBlowSettlesResumesExactly) {
     const fs::path dir = fresh_dir("drained-drive");
-    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
-    for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
-                            {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"},
+    const fs::path file = two_blow_drive(dir, "drained-drive.yaml", {
                             {"{plane: y_min, type: fixed}", "{plane: y_min, type: absorbing}"},
                             {"stages:\n", "stages:\n  - {name: nil, type: quasi_static, drainage: drained, max_steps: 200, "
                                           "tolerance: 1.0e-12, local_damping: 0.7}\n"},
-                            {"    interval: 0.5 ", "    settle_damping: 0.7\n    interval: 0.5 "}}) {
-        const auto at = yaml.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        yaml.replace(at, from.size(), to);
-    }
-    const fs::path file = dir / "drained-drive.yaml";
-    std::ofstream(file) << yaml;
+                            {"    interval: 0.5 ", "    settle_damping: 0.7\n    interval: 0.5 "}});
     // 200 nil steps, blows of some 375 steps settling from 4 ms (of 10), a pause of 8.
     check_resume(dir, file.string(), SIGTERM, 200 + 375 + 8 + 250);
     EXPECT_TRUE(fs::exists(dir / "whole" / "blows.csv"));
@@ -258,15 +261,7 @@ TEST(MpmResume, ADriveAfterADrainedNilStepOnAHeldBaseStoppedAsItsBlowSettlesResu
 // the toe) comes back placed, not at 0 m as before, so the tables match.
 TEST(MpmResume, ADriveStoppedInAPauseResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("drive-pause");
-    std::string yaml = read_file(std::string(PILEMPM_SOURCE_DIR) + "/cases/verification/coupled-driving-energy.yaml");
-    for (auto [from, to] : {std::pair<std::string, std::string>{"blows: 3", "blows: 2"},
-                            {"blow_duration: 0.25 ", "blow_duration: 0.01 "}, {"  blows: 3\n", "  blows: 2\n"}}) {
-        const auto at = yaml.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        yaml.replace(at, from.size(), to);
-    }
-    const fs::path file = dir / "drive.yaml";
-    std::ofstream(file) << yaml;
+    const fs::path file = two_blow_drive(dir, "drive.yaml");
     check_resume(dir, file.string(), SIGTERM, 379);  // the first blow some 375 steps, its pause 8
     fs::remove_all(dir);
 }
