@@ -17,6 +17,7 @@
 #include "io/cases/mpm_case.hpp"
 #include "io/cases/mpm_run_builder.hpp"
 #include "io/hdf5/hdf5_results.hpp"
+#include "io/hdf5/history_segments.hpp"
 #include "io/hdf5/run_checkpoint.hpp"
 #include "io/writers/csv_writer.hpp"
 #include "io/writers/json_writer.hpp"
@@ -287,7 +288,8 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             std::fprintf(stderr, "resuming at stage %d, t = %g s, step %ld\n", restored.driver.stage + 1,
                          restored.solver.time, restored.solver.steps);
     }
-    io::MpmRunOutput<D> output(staged, io::state_names(m), fingerprint(c), quiet);
+    io::MpmRunOutput<D> output(staged, io::state_names(m), fingerprint(c), quiet,
+                               static_cast<std::size_t>(c.history_segment_rows));
     if (m.saturated()) {
         std::vector<double> friction;
         for (const auto& mat : c.materials) friction.push_back(mat.friction_angle);
@@ -324,7 +326,9 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     }
     if (resume) {
         output.adopt_snapshots(restored.snapshot_times);
-        driver.resume(restored.driver, restored.solver, restored.history);
+        output.adopt_history_segments(restored.history_segments);
+        driver.resume(restored.driver, restored.solver,
+                      io::assemble_history(staged.path(), restored.history_segments, restored.history));
         if constexpr (D == 2)
             if (coupled) coupled->restore(restored.body);
     }

@@ -152,6 +152,7 @@ struct MpmCase : CaseFile {
     MpmPileInput pile;
     double snapshot_interval = 0.0; // s of simulated time (0: one snapshot per stage end)
     long checkpoint_every = 0;      // steps (0: only at stage ends)
+    long history_segment_rows = 100000;  // history rows per file sealed beside the checkpoint
     bool plots = true;
     std::vector<std::array<double, 3>> probes;  // points whose nearest material point is recorded
     std::vector<std::string> verification_checks;

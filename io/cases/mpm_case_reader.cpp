@@ -428,6 +428,7 @@ MpmCase read_mpm_case(const std::string& file) {
     if (auto out = root.optional_map("output")) {
         c.snapshot_interval = out->number_or("snapshot_interval", 0.0, non_negative("interval in s"));
         c.checkpoint_every = out->integer_or("checkpoint_every", 0, 0);
+        c.history_segment_rows = out->integer_or("history_segment_rows", 100000, 1);
         c.plots = out->boolean_or("plots", true);
         if (out->has("probes")) {
             const YAML::Node list = out->raw("probes");

@@ -22,6 +22,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFormat = "pilempm-mpm-checkpoint";
+constexpr const char* kTableFormat = "pilempm-tables";  // write_table_file
+constexpr int kTableFormatVersion = 1;
 constexpr int kFormatVersion = 5;  // 2: the affine velocity field C; 3: arrays and tables; 4: field; 5: pore water
 // Datasets are chunked (Fletcher32 needs chunks; a chunk must stay below 4 GiB).
 constexpr hsize_t kChunkValues = hsize_t{1} << 20;
@@ -426,22 +428,18 @@ CheckpointInfo read_file(const Context& c, const fs::path& file, mpm::Particles<
     return info;
 }
 
-}  // namespace
 
-template <int D>
-void write_checkpoint(const fs::path& file, const mpm::Particles<D>& p, double time, long step,
-                      const std::vector<std::pair<std::string, double>>& scalars,
-                      const std::string& case_fingerprint, const CheckpointExtras& extras) {
-    const hdf5::QuietErrors quiet;
-    const Context c(file.string());
-    validate(c, p);  // before any file is touched
+// Writes `file` + ".tmp" through `write`, syncs it and renames it over `file`: a crash
+// mid-write leaves the previous file intact.
+template <typename Write>
+void write_atomically(const Context& c, const fs::path& file, Write&& write) {
     fs::path tmp = file;
     tmp += ".tmp";
     try {
-        write_file(c, tmp, p, time, step, scalars, case_fingerprint, extras);
+        write(tmp);
         sync_path(tmp, false, c);
     } catch (...) {
-        // All handles are closed by now (RAII in write_file); the old checkpoint is untouched.
+        // All handles are closed by now (RAII in the writer); the old file is untouched.
         std::error_code ec;
         fs::remove(tmp, ec);
         throw;
@@ -455,6 +453,59 @@ void write_checkpoint(const fs::path& file, const mpm::Particles<D>& p, double t
     }
     const fs::path dir = file.parent_path();
     sync_path(dir.empty() ? fs::path(".") : dir, true, c);
+}
+
+void write_table_contents(const Context& c, const fs::path& file, const std::vector<Table>& tables) {
+    Hid fapl = c.make(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
+    c.check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), "cannot set file format");
+    Hid h5 = c.make(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
+                    "cannot create " + file.string());
+    write_string_attribute(c, h5.get(), "format", {kTableFormat}, true);
+    write_attribute(c, h5.get(), "format_version", kTableFormatVersion);
+    CheckpointExtras extras;
+    extras.tables = tables;
+    write_extras(c, h5.get(), extras);
+    hdf5::flush_and_close(c, h5);
+}
+
+}  // namespace
+
+template <int D>
+void write_checkpoint(const fs::path& file, const mpm::Particles<D>& p, double time, long step,
+                      const std::vector<std::pair<std::string, double>>& scalars,
+                      const std::string& case_fingerprint, const CheckpointExtras& extras) {
+    const hdf5::QuietErrors quiet;
+    const Context c(file.string());
+    validate(c, p);  // before any file is touched
+    write_atomically(c, file, [&](const fs::path& tmp) { write_file(c, tmp, p, time, step, scalars, case_fingerprint, extras); });
+}
+
+void write_table_file(const fs::path& file, const std::vector<Table>& tables) {
+    const hdf5::QuietErrors quiet;
+    const Context c(file.string());
+    for (const Table& t : tables)
+        for (const auto& column : t.data)
+            if (column.size() != t.rows()) c.fail("table " + t.name + " has columns of different lengths");
+    write_atomically(c, file, [&](const fs::path& tmp) { write_table_contents(c, tmp, tables); });
+}
+
+std::vector<Table> read_table_file(const fs::path& file) {
+    const hdf5::QuietErrors quiet;
+    const Context c(file.string());
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) c.fail("no such file");
+    if (H5Fis_hdf5(file.c_str()) <= 0) c.fail("not an HDF5 file (corrupt or truncated?)");
+    Hid h5 = c.make(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open (corrupt or truncated?)");
+    const hid_t root = h5.get();
+    if (H5Aexists(root, "format") <= 0 || read_single_string(c, root, "/", "format") != kTableFormat)
+        c.fail(std::string("not a pilempm table file (root attribute format is not \"") + kTableFormat + "\")");
+    const int version = read_attribute<int>(c, root, "/", "format_version");
+    if (version != kTableFormatVersion)
+        c.fail("table file format version " + std::to_string(version) + ", this build reads " +
+               std::to_string(kTableFormatVersion));
+    std::vector<Table> tables = read_extras(c, root).tables;
+    c.check(h5.reset(), "cannot close");
+    return tables;
 }
 
 template <int D>

@@ -60,6 +60,13 @@ void write_checkpoint(const std::filesystem::path& file, const mpm::Particles<D>
 template <int D>
 CheckpointInfo read_checkpoint(const std::filesystem::path& file, mpm::Particles<D>& p);
 
+// A file of tables alone (the sealed parts of a long run's history, history_segments.hpp),
+// laid out as a checkpoint's /tables (root attribute format = "pilempm-tables") and written
+// the same way: Fletcher32 checksums, `file` + ".tmp" renamed over `file` once synced. Both
+// throw std::runtime_error naming the file.
+void write_table_file(const std::filesystem::path& file, const std::vector<Table>& tables);
+std::vector<Table> read_table_file(const std::filesystem::path& file);
+
 extern template void write_checkpoint<2>(const std::filesystem::path&, const mpm::Particles<2>&,
                                          double, long,
                                          const std::vector<std::pair<std::string, double>>&,

@@ -11,12 +11,13 @@ namespace fs = std::filesystem;
 
 template <int D>
 MpmRunOutput<D>::MpmRunOutput(StagedDirectory& staged, std::vector<std::string> state_names,
-                              std::string case_fingerprint, bool quiet)
+                              std::string case_fingerprint, bool quiet, std::size_t history_segment_rows)
     : staged_(staged),
       vtk_(staged.path() / "vtk", "particles", std::move(state_names)),
       fingerprint_(std::move(case_fingerprint)),
       quiet_(quiet),
-      progress_("", quiet) {}
+      progress_("", quiet),
+      history_segments_(staged.path(), history_segment_rows) {}
 
 template <int D>
 void MpmRunOutput<D>::snapshot(double time, const mpm::MpmModel<D>& model) {
@@ -30,7 +31,8 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
     RunCheckpoint run;
     run.driver = state;
     run.solver = solver.state();
-    run.history = history;
+    run.history = history_segments_.seal(history);  // the rows not yet in a segment file
+    run.history_segments = history_segments_.rows_per_segment();
     run.snapshot_times = vtk_.step_times();
     run.case_fingerprint = fingerprint_;
     if (body_) run.body = body_->state();

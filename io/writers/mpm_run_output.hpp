@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "coupling/driver/stage_driver.hpp"
+#include "io/hdf5/history_segments.hpp"
 #include "io/writers/staged_directory.hpp"
 #include "io/writers/stage_progress.hpp"
 #include "io/writers/vtk_particle_writer.hpp"
@@ -18,12 +19,15 @@ namespace pilempm::io {
 template <int D>
 class MpmRunOutput final : public coupling::StageObserver<D> {
 public:
-    // Writes into staged.path(): vtk/particles_NNNNNN.vtu + particles.pvd, checkpoint.h5.
+    // Writes into staged.path(): vtk/particles_NNNNNN.vtu + particles.pvd, checkpoint.h5 and
+    // the history's older rows in checkpoint-history-NNNN.h5, history_segment_rows a file.
     MpmRunOutput(StagedDirectory& staged, std::vector<std::string> state_names, std::string case_fingerprint,
-                 bool quiet);
+                 bool quiet, std::size_t history_segment_rows = 100000);
 
     // A resumed run: the snapshots the interrupted run wrote stay in the series.
     void adopt_snapshots(const std::vector<double>& times) { vtk_.adopt_written_steps(times); }
+    // A resumed run: the history segments its checkpoint names.
+    void adopt_history_segments(std::vector<double> rows) { history_segments_.adopt(std::move(rows)); }
     std::filesystem::path checkpoint_path() const { return staged_.path() / "checkpoint.h5"; }
     // Writes the .pvd.
     void finish() { vtk_.finish(); }
@@ -64,6 +68,7 @@ private:
     std::string fingerprint_;
     bool quiet_;
     StageProgress<D> progress_;
+    HistorySegments history_segments_;
     const coupling::CoupledBody<D>* body_ = nullptr;
     std::function<void(double)> also_;
     std::function<void(const coupling::DriverState&, const Table&)> also_at_checkpoint_;

@@ -5,7 +5,8 @@
 // stage that goes on to a dynamic one, for saturated soil stopped in a consolidation
 // pause and in the blow after it, for an FE pile jacked into the soil, for a drive after a
 // drained nil step on a held absorbing base stopped as a blow settles, on a graded grid,
-// and for a stop during a verification's grid-sequence reruns.
+// and for a stop during a verification's grid-sequence reruns; with the history sealed in
+// segment files beside the checkpoint.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -263,6 +264,19 @@ TEST(MpmResume, ADriveStoppedInAPauseResumedWritesWhatAnUninterruptedOneWrites) 
     const fs::path dir = fresh_dir("drive-pause");
     const fs::path file = two_blow_drive(dir, "drive.yaml");
     check_resume(dir, file.string(), SIGTERM, 379);  // the first blow some 375 steps, its pause 8
+    fs::remove_all(dir);
+}
+
+// The same drive with its history sealed in segments of 100 rows beside the checkpoint
+// (some 760 rows by the stop): the checkpoint carries only the rows after them, and the
+// resumed run reads them back into the same history.
+TEST(MpmResume, ADriveWhoseHistoryIsSealedInSegmentsResumesExactly) {
+    const fs::path dir = fresh_dir("drive-segments");
+    const fs::path file = two_blow_drive(dir, "drive.yaml", {{"  plots: false\n", "  plots: false\n  history_segment_rows: 100\n"}});
+    check_resume(dir, file.string(), SIGTERM, 450, [](const fs::path& incomplete) {
+        EXPECT_TRUE(fs::exists(incomplete / "checkpoint-history-0000.h5"));
+        EXPECT_TRUE(fs::exists(incomplete / "checkpoint-history-0003.h5"));
+    });
     fs::remove_all(dir);
 }
 
