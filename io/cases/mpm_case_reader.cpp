@@ -9,7 +9,7 @@ namespace pilempm::io {
 namespace {
 
 const std::vector<std::string> kChecks = {"self_weight_stress", "lame_cylinder", "wave_arrival",
-                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "ram_energy_into_pile", "hammer_energy_every_blow", "conservation", "granular_runout",
+                                          "absorbed_energy", "footing_collapse", "rigid_punch", "hammer_energy_into_pile", "ram_energy_into_pile", "hammer_energy_every_blow", "conservation", "contact_penetration", "granular_runout",
                                           "stress_noise", "lateral_stress_ratio", "nil_step_displacement",
                                           "shear_wave_arrival", "terzaghi_consolidation", "undrained_wave_speed", "fast_wave_speed",
                                           "poroelastic_wave_history",

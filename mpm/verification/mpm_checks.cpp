@@ -264,6 +264,20 @@ std::vector<VerificationCheck> conservation(const MpmCheckContext& c, const Tabl
                         "the pore water's volume sum n V at the end against the start (per radian in axisymmetry)")};
 }
 
+// The penalty contact's largest penetration over the run, as a fraction of the cell
+// (`max_penetration_over_cell`, the deepest pair each step), against issue 13's bound of 1 %
+// (`penetration_tolerance`): the contact's stiffness rule (README, Penalty rule) must hold
+// it for the stresses the case reaches.
+VerificationCheck contact_penetration(const MpmCheckContext& c, const Table& history) {
+    const auto& penetration = column(history, "max_penetration_over_cell");
+    double worst = 0.0;
+    for (double g : penetration)
+        if (g > worst) worst = g;  // NaN rows (before a resume across builds) are skipped
+    const double bound = c.parameters.count("penetration_tolerance") ? c.parameters.at("penetration_tolerance") : 0.01;
+    return make_check("contact_largest_penetration_over_cell", worst, 0.0, bound, false,
+                      "the deepest any material point reached into the pile over the run, over the cell");
+}
+
 // A rigid ram (mass m, striking at v0, no cushion) on the head of a pile of impedance Z that
 // sends no wave back before T: m dv/dt = m g - Z v, so v = a + (v0 - a) e^{-t / tau} with
 // a = m g / Z, tau = m / Z, and the ram has put Z int_0^T v^2 dt through the head by T:
@@ -425,7 +439,7 @@ std::vector<VerificationCheck> run_mpm_verification(const MpmCheckContext& c, co
         } else if (name == "conservation") {
             auto v = conservation(c, history);
             out.insert(out.end(), v.begin(), v.end());
-        }
+        } else if (name == "contact_penetration") out.push_back(contact_penetration(c, history));
         else if (name == "granular_runout") {
             auto v = runout<D>(c, m);
             out.insert(out.end(), v.begin(), v.end());
