@@ -32,6 +32,9 @@ struct MpmBoundaryInput {
     mpm::BoundaryKind kind = mpm::BoundaryKind::Fixed;
     double friction = 0.0;  // Coulomb coefficient of a frictional wall
     bool drained = false;   // saturated soil: water flows through it (default: impermeable)
+    // Absorbing: the distance R (m) setting its far-field springs 2 G / R and G / R; < 0: the
+    // grid's extent across the boundary; 0: none (dashpots alone).
+    double far_field_distance = -1.0;
 };
 
 // The pore water of saturated materials and the free water surface above the ground.

@@ -320,6 +320,8 @@ MpmCase read_mpm_case(const std::string& file) {
                                          : mpm::BoundaryKind::Frictional;
             if (b.kind == mpm::BoundaryKind::Frictional)
                 b.friction = m.number("friction", non_negative("Coulomb friction coefficient"));
+            if (b.kind == mpm::BoundaryKind::Absorbing)
+                b.far_field_distance = m.number_or("far_field_distance", -1.0, non_negative("a distance in m (0: dashpots alone)"));
             // An open (absorbing) boundary lets water through as it lets the waves; a support
             // holds the water unless drained.
             b.drained = m.choice_or("drainage", b.kind == mpm::BoundaryKind::Absorbing ? "drained" : "impermeable",

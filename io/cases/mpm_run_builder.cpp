@@ -287,8 +287,10 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             cp = (M / cu + (dr.drainage == mpm::Drainage::Coupled ? 0.0 : pore)) / rho;
             if (dr.drainage == mpm::Drainage::Coupled) water_impedance = pore;
         }
+        // The far field's springs: from the source, taken at the boundary's opposite face.
+        const double far = b.far_field_distance >= 0.0 ? b.far_field_distance : m.grid.top(b.axis) - m.grid.origin[b.axis];
         mpm::apply_boundary<D>(m.grid, b.axis, b.side, b.kind, rho, cp, std::sqrt(G / rho), c.axisymmetric, b.friction,
-                               water_impedance, b.drained);
+                               water_impedance, b.drained, far);
     }
     auto& p = m.particles;
     for (const auto& pr : c.pressures)

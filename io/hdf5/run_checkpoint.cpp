@@ -30,6 +30,7 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
     CheckpointExtras extras;
     extras.arrays.emplace_back("snapshot_times", run.snapshot_times);
     extras.arrays.emplace_back("boundary_held_force", run.solver.held_force);
+    extras.arrays.emplace_back("boundary_displacement", run.solver.boundary_displacement);
     extras.arrays.emplace_back("history_segments", run.history_segments);
     for (const auto& [name, values] : run.body) extras.arrays.emplace_back(kBodyPrefix + name, values);
     extras.tables.push_back(run.history);
@@ -64,6 +65,7 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     for (const auto& [name, values] : info.extras.arrays) {
         if (name == "snapshot_times") run.snapshot_times = values;
         if (name == "boundary_held_force") run.solver.held_force = values;
+        if (name == "boundary_displacement") run.solver.boundary_displacement = values;
         if (name == "history_segments") run.history_segments = values;  // none before them: all in the table
         if (name.rfind(kBodyPrefix, 0) == 0) run.body.emplace_back(name.substr(kBodyPrefix.size()), values);
     }

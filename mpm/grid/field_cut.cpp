@@ -73,7 +73,17 @@ int FieldCut::normal_away_from(const double* p, double* n) const {
     return nearest;
 }
 
-void apply_field_cuts(const Grid<2>& grid, const std::vector<FieldCut>& cuts, const double* x, Stencil<2>& s) {
+void apply_field_cuts(const Grid<2>& grid, const std::vector<FieldCut>& cuts, const double* x, const double* half,
+                      Stencil<2>& s) {
+    // The stencil's nodes are those of the cells the point's domain reaches along x: a line
+    // from the point to any of them stays within those cells' x range, and most points (the
+    // soil away from the wall) have no cut there.
+    const double reach = std::abs(half[0]) + std::abs(half[2]);
+    const double low = grid.coordinate(0, grid.cell_beyond(0, x[0] - reach));
+    const double high = grid.coordinate(0, grid.cell_beyond(0, x[0] + reach) + 1);
+    bool near = false;
+    for (const auto& cut : cuts) near = near || (high >= cut.x_low && low <= cut.x_high);
+    if (!near) return;
     for (int k = 0; k < s.count; ++k) {
         const int stored = s.e[k].node / grid.fields;
         const auto ijk = grid.stored_ijk(stored);

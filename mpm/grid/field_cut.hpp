@@ -39,6 +39,8 @@ struct FieldCut {
 };
 
 // Moves each stencil entry of the point at x across every cut its line to the node crosses.
-void apply_field_cuts(const Grid<2>& grid, const std::vector<FieldCut>& cuts, const double* x, Stencil<2>& s);
+// half: the point's half-edge vectors (row k = vector k, as evaluate_shape took them).
+void apply_field_cuts(const Grid<2>& grid, const std::vector<FieldCut>& cuts, const double* x, const double* half,
+                      Stencil<2>& s);
 
 }  // namespace pilempm::mpm

@@ -34,6 +34,11 @@ struct NodeCondition {
     // the far field carried at rest), with their dashpots.
     unsigned char absorbing[3] = {0, 0, 0};
     double held_force[3] = {0, 0, 0};   // N
+    // The far field's static stiffness behind an absorbing boundary (N/m), on the node's
+    // displacement since it was held: a held force a little off balance then moves the
+    // boundary a little instead of letting it creep for as long as the run lasts.
+    double spring[3] = {0, 0, 0};
+    double displacement[3] = {0, 0, 0};  // m, since the last static stage
 };
 
 template <int D>

@@ -58,7 +58,7 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
         half_domain_edges<D>(p, i, m_.shape, half);
         evaluate_shape<D>(g, m_.shape, m_.axisymmetric, &p.x[D * i], half, stencil_[i], p.field[i]);
         if constexpr (D == 2)
-            if (!m_.field_cuts.empty()) apply_field_cuts(g, m_.field_cuts, &p.x[D * i], stencil_[i]);
+            if (!m_.field_cuts.empty()) apply_field_cuts(g, m_.field_cuts, &p.x[D * i], half, stencil_[i]);
     }
     // Unknowns: D displacements per node any point reaches, one pressure per node a coupled
     // point reaches (the others: dp = 0).

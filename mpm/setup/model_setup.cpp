@@ -43,7 +43,8 @@ int fill_region(const Grid<D>& g, Particles<D>& p, const std::function<bool(cons
 
 template <int D>
 void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double density, double cp, double cs,
-                    bool axisymmetric, double friction, double water_impedance, bool drained) {
+                    bool axisymmetric, double friction, double water_impedance, bool drained,
+                    double far_field_distance) {
     const int nn = g.num_nodes();
     const int plane = side == 0 ? 0 : g.cells[axis];
     if (kind != BoundaryKind::Absorbing) g.closed[2 * axis + side] = true;
@@ -66,6 +67,9 @@ void apply_boundary(Grid<D>& g, int axis, int side, BoundaryKind kind, double de
                 if (d != axis) area *= g.tributary(d, c[d]);
             if (axisymmetric) area *= g.coordinate(0, c[0]);
             for (int d = 0; d < D; ++d) cond.dashpot[d] += density * (d == axis ? cp : cs) * area;
+            if (far_field_distance > 0.0)
+                for (int d = 0; d < D; ++d)
+                    cond.spring[d] += (d == axis ? 2.0 : 1.0) * density * cs * cs / far_field_distance * area;
             cond.absorbing[axis] = 1;
             cond.water_dashpot[axis] += water_impedance * area;
         }
@@ -93,8 +97,10 @@ void apply_k0_stress(Particles<D>& p, double surface, double gravity, const std:
 
 template int fill_region<2>(const Grid<2>&, Particles<2>&, const std::function<bool(const double*)>&, int, double, int, bool);
 template int fill_region<3>(const Grid<3>&, Particles<3>&, const std::function<bool(const double*)>&, int, double, int, bool);
-template void apply_boundary<2>(Grid<2>&, int, int, BoundaryKind, double, double, double, bool, double, double, bool);
-template void apply_boundary<3>(Grid<3>&, int, int, BoundaryKind, double, double, double, bool, double, double, bool);
+template void apply_boundary<2>(Grid<2>&, int, int, BoundaryKind, double, double, double, bool, double, double, bool,
+                                double);
+template void apply_boundary<3>(Grid<3>&, int, int, BoundaryKind, double, double, double, bool, double, double, bool,
+                                double);
 template void apply_k0_stress<2>(Particles<2>&, double, double, const std::function<double(double)>&,
                                  const std::function<double(double)>&, double);
 template void apply_k0_stress<3>(Particles<3>&, double, double, const std::function<double(double)>&,

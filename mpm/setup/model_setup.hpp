@@ -25,10 +25,14 @@ enum class BoundaryKind { Fixed, Roller, Absorbing, Frictional };
 // Saturated soil: an absorbing boundary's pore-pressure dashpot water_impedance (Pa s/m,
 // on the normal component of the water field) over the same areas; a drained boundary's
 // supports hold the skeleton only, the water flows through.
+// far_field_distance R > 0 (m): each absorbing node also gets springs of the far field's
+// static stiffness over its area, 2 G / R normal (a cylindrical cavity's in an elastic
+// medium) and G / R along the boundary, G = density c_s^2 (a Kelvin-Voigt boundary).
 template <int D>
 void apply_boundary(Grid<D>& grid, int axis, int side, BoundaryKind kind, double density = 0.0,
                     double p_wave_speed = 0.0, double shear_wave_speed = 0.0, bool axisymmetric = false,
-                    double friction = 0.0, double water_impedance = 0.0, bool drained = false);
+                    double friction = 0.0, double water_impedance = 0.0, bool drained = false,
+                    double far_field_distance = 0.0);
 
 // K0 stress of horizontally layered ground whose surface is at elevation `surface`
 // (vertical axis D-1): sigma_v = -g int rho dz from the surface down, sigma_h = K0 sigma_v,

@@ -83,8 +83,11 @@ double MpmSolver<D>::stable_time_step() const {
 
 template <int D>
 SolverState MpmSolver<D>::state() const {
-    SolverState s{time_, steps_, absorbed_, external_work_, {}};
-    for (const auto& c : m_.grid.conditions) s.held_force.insert(s.held_force.end(), c.held_force, c.held_force + 3);
+    SolverState s{time_, steps_, absorbed_, external_work_, {}, {}};
+    for (const auto& c : m_.grid.conditions) {
+        s.held_force.insert(s.held_force.end(), c.held_force, c.held_force + 3);
+        s.boundary_displacement.insert(s.boundary_displacement.end(), c.displacement, c.displacement + 3);
+    }
     return s;
 }
 
@@ -101,6 +104,10 @@ void MpmSolver<D>::restore(const SolverState& s) {
                                     std::to_string(conditions.size()) + " boundary nodes");
     for (std::size_t c = 0; c < conditions.size(); ++c)
         std::copy_n(s.held_force.begin() + 3 * c, 3, conditions[c].held_force);
+    // A checkpoint from before the far field's springs: the boundary anchored where it is.
+    if (s.boundary_displacement.size() == 3 * conditions.size())
+        for (std::size_t c = 0; c < conditions.size(); ++c)
+            std::copy_n(s.boundary_displacement.begin() + 3 * c, 3, conditions[c].displacement);
 }
 
 template <int D>
@@ -338,7 +345,7 @@ void MpmSolver<D>::build_stencil(long i) {
     evaluate_shape<D>(m_.grid, m_.shape, m_.axisymmetric, &m_.particles.x[D * i], half, stencil_[i],
                       m_.particles.field[i]);
     if constexpr (D == 2)
-        if (!m_.field_cuts.empty()) apply_field_cuts(m_.grid, m_.field_cuts, &m_.particles.x[D * i], stencil_[i]);
+        if (!m_.field_cuts.empty()) apply_field_cuts(m_.grid, m_.field_cuts, &m_.particles.x[D * i], half, stencil_[i]);
 }
 
 // Per grid entry: mass, momentum, total force, and (PointForces) the forces applied to points
@@ -442,7 +449,10 @@ void MpmSolver<D>::update_grid(double dt) {
     for (int n = 0; n < nodes; ++n) {
         NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
         if (cond) std::fill(cond->reaction, cond->reaction + 3, 0.0);
-        if (cond && static_boundaries_) std::fill(cond->held_force, cond->held_force + 3, 0.0);
+        if (cond && static_boundaries_) {
+            std::fill(cond->held_force, cond->held_force + 3, 0.0);
+            std::fill(cond->displacement, cond->displacement + 3, 0.0);
+        }
         bool held_given = false;  // a node's held force goes to its first field with mass
         for (int f = 0; f < fields; ++f) {
             const int nodef = n * fields + f;
@@ -456,7 +466,8 @@ void MpmSolver<D>::update_grid(double dt) {
                     continue;
                 }
                 const double v0 = g.momentum[k] / mass;
-                const double held = held_share > 0.0 ? cond->held_force[d] : 0.0;
+                const double spring = held_share > 0.0 ? -cond->spring[d] * cond->displacement[d] : 0.0;
+                const double held = held_share > 0.0 ? cond->held_force[d] + spring : 0.0;
                 double force = g.force[k] + held;
                 const bool absorbing_held = cond && static_boundaries_ && cond->absorbing[d];
                 if (cond && (cond->fixed[d] || absorbing_held)) {
@@ -478,7 +489,11 @@ void MpmSolver<D>::update_grid(double dt) {
                 const double c = cond ? cond->dashpot[d] : 0.0;
                 double v1 = ((mass / dt - 0.5 * c) * v0 + force) / (mass / dt + 0.5 * c);
                 if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
-                external_work_ += 0.5 * (external_[k] + held) * (v0 + v1) * dt;
+                if (held_share > 0.0 && cond->spring[d] > 0.0) {
+                    absorbed_ -= 0.5 * spring * (v0 + v1) * dt;  // stored in the far field's spring
+                    cond->displacement[d] += 0.5 * (v0 + v1) * dt;
+                }
+                external_work_ += 0.5 * (external_[k] + held - spring) * (v0 + v1) * dt;
                 g.velocity[k] = v1;
                 g.acceleration[k] = (v1 - v0) / dt;
             }

@@ -86,6 +86,7 @@ struct SolverState {
     double absorbed_energy = 0.0;  // J, work of the absorbing dashpots (energy leaving)
     double external_work = 0.0;    // J, work of the external forces (gravity, surface loads)
     std::vector<double> held_force;  // N, 3 per grid condition: what absorbing boundaries hold
+    std::vector<double> boundary_displacement;  // m, 3 per grid condition: since they were held
 };
 
 // Memory of a run: per point (its arrays and its stored stencil) and per stored grid node
