@@ -46,9 +46,9 @@ void apply_elastic(double lam, double G, const double* de, double* ds) {
 // Eigenvalues d and unit eigenvectors q[i] (Cartesian components, unsorted) of a symmetric
 // tensor [xx yy zz xy yz zx], by cyclic Jacobi rotations (no trigonometry: one square root
 // and one division per rotation). In the frame of a nearby decomposition (frame) the tensor
-// is already almost diagonal, and one sweep or two reach rounding; without one, and for a
-// plane tensor (yz = zx = 0: one rotation), from the Cartesian axes. A diagonal tensor is
-// taken as it is (its eigenvalues are its entries exactly).
+// is already almost diagonal, and one sweep or two reach rounding; without one, from the
+// Cartesian axes. A plane tensor (yz = zx = 0, every tensor of a 2D run) is solved in closed
+// form, a diagonal one taken as it is (its eigenvalues are its entries exactly).
 void symmetric_eigen(const double* t, const double (*frame)[3], double d[3], double q[3][3]) {
     double a01, a02, a12;
     if (t[3] == 0.0 && t[4] == 0.0 && t[5] == 0.0) {
@@ -59,8 +59,28 @@ void symmetric_eigen(const double* t, const double (*frame)[3], double d[3], dou
             for (int j = 0; j < 3; ++j) q[i][j] = i == j ? 1.0 : 0.0;
         return;
     }
-    // A plane tensor is one rotation from the Cartesian axes: cheaper than the frame's change.
-    if (frame && !(t[4] == 0.0 && t[5] == 0.0)) {
+    if (t[4] == 0.0 && t[5] == 0.0) {
+        // A plane tensor (xy != 0): the in-plane pair in closed form, the rotation by its
+        // half-angle's cosine and sine from cos 2a = (xx - yy) / (2 r), sin 2a = xy / r.
+        const double mean = 0.5 * (t[0] + t[1]), half = 0.5 * (t[0] - t[1]);
+        const double r = std::sqrt(half * half + t[3] * t[3]);
+        double c, sn;
+        if (half >= 0.0) {
+            c = std::sqrt(0.5 * (1.0 + half / r));
+            sn = t[3] / (2.0 * r * c);
+        } else {
+            sn = std::copysign(std::sqrt(0.5 * (1.0 - half / r)), t[3]);
+            c = t[3] / (2.0 * r * sn);
+        }
+        d[0] = mean + r;
+        d[1] = mean - r;
+        d[2] = t[2];
+        q[0][0] = c, q[0][1] = sn, q[0][2] = 0.0;
+        q[1][0] = -sn, q[1][1] = c, q[1][2] = 0.0;
+        q[2][0] = 0.0, q[2][1] = 0.0, q[2][2] = 1.0;
+        return;
+    }
+    if (frame) {
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) q[i][j] = frame[i][j];
         double tq[3][3];  // t q_i
