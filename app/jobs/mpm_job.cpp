@@ -306,7 +306,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     std::unique_ptr<io::PileVtkSeries> pile_vtk;
     if constexpr (D == 2) {
         if (run.pile.present) {
-            output.set_body(coupled.get());
+            output.set_body(coupled.get(), ground_elevation(c, run));
             // The pile in ParaView over the soil (its mesh placed in the soil's frame), with
             // its displacements, axial stress and contact forces.
             pile_vtk = std::make_unique<io::PileVtkSeries>(staged.path() / "vtk", placed_pile_mesh(run), "pile");

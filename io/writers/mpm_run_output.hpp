@@ -35,8 +35,12 @@ public:
         vtk_.set_pore_water(water, std::move(friction_angle_deg));
     }
 
-    // The coupled body whose state each checkpoint carries (none: nullptr).
-    void set_body(const coupling::CoupledBody<D>* body) { body_ = body; }
+    // The coupled body whose state each checkpoint carries (none: nullptr); ground: the
+    // elevation a blow's line reports the toe's depth from (the seabed), m.
+    void set_body(const coupling::CoupledBody<D>* body, double ground = 0.0) {
+        body_ = body;
+        ground_ = ground;
+    }
     // Called at each snapshot after the particles' (the pile's own VTK series).
     void also_at_snapshots(std::function<void(double)> write) { also_ = std::move(write); }
     // Called after each checkpoint with the driver's state and the history so far (a drive's
@@ -74,6 +78,9 @@ private:
     std::function<void(const coupling::DriverState&, const Table&)> also_at_checkpoint_;
     std::vector<StageWallTime> walls_;
     double stage_began_ = 0.0;  // s on the steady clock
+    double ground_ = 0.0;
+    double last_blow_toe_ = 0.0;  // m, the toe where the last blow left it (once blow_seen_)
+    bool blow_seen_ = false;
 };
 
 extern template class MpmRunOutput<2>;
