@@ -192,8 +192,17 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
     }
     report.steps = state_.stage_steps;
     report.unbalanced_ratio = solver_.unbalanced_force_ratio();
+    if (st.blow && body_) report.set = blow_set();
     observer_->stage_end(state_.stage, st, report);
     return true;
+}
+
+// A blow's set counts from where the last blow left the toe, as a set is read in the field
+// and blows.csv counts it: the pause's settlement goes to the blow after it.
+template <int D>
+double StageDriver<D>::blow_set() const {
+    const double from = std::isnan(state_.last_blow_end_toe) ? state_.blow_start_toe : state_.last_blow_end_toe;
+    return from - body_->toe_elevation();
 }
 
 // Real time with the soil at rest: implicit u-p steps growing geometrically, the last one
@@ -243,7 +252,8 @@ int StageDriver<D>::end_stage(const StageSpec& st) {
     const int here = state_.stage;
     if (!st.blow || !body_) return here;
     const double toe = body_->toe_elevation();
-    const double set = state_.blow_start_toe - toe;
+    const double set = blow_set();
+    state_.last_blow_end_toe = toe;
     state_.low_set_blows = set < st.refusal_set ? state_.low_set_blows + 1 : 0;
     std::string why;
     if (toe <= st.end_toe_elevation)

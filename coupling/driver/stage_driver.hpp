@@ -6,6 +6,7 @@
 // from a checkpoint continues exactly as if it had never stopped. Output goes through a
 // StageObserver (VTK, checkpoint files, progress): the driver itself writes nothing.
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,10 +29,12 @@ struct DriverState {
     long stage_steps = 0;           // steps taken in the stage
     double next_snapshot = 0.0;     // s of simulated time
     bool initial_snapshot_written = false;
-    // Impact driving: when the last blow began (s), its body's toe then (m), and the blows in
-    // a row that set the pile less than the refusal set.
+    // Impact driving: when the last blow began (s), its body's toe then (m), where the last
+    // blow left the toe (m; NaN before the first), and the blows in a row that set the pile
+    // less than the refusal set.
     double blow_start_time = 0.0;
     double blow_start_toe = 0.0;
+    double last_blow_end_toe = std::numeric_limits<double>::quiet_NaN();
     int low_set_blows = 0;
     // s: since when the body has been slower than the stage's rest_speed (< 0: moving).
     double rest_since = -1.0;
@@ -48,6 +51,7 @@ struct StageReport {
     double unbalanced_ratio = 0.0;
     bool in_equilibrium = false;  // quasi-static: the tolerance was met
     bool stopped = false;         // a stop request ended the stage early
+    double set = std::numeric_limits<double>::quiet_NaN();  // m, a blow's (as blows.csv counts it)
 };
 
 template <int D>
@@ -104,6 +108,7 @@ private:
     bool run_consolidation(const StageSpec& st, const StopRequest* stop);
     void begin_stage(const StageSpec& st);
     int end_stage(const StageSpec& st);
+    double blow_set() const;  // m, the blow just run (body_ set)
     bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop);
     double step_size() const;
     // The soil's unbalanced force ratio, or the body's where larger (a quasi-static stage's end).

@@ -22,6 +22,7 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
         {"initial_snapshot_written", s.initial_snapshot_written ? 1.0 : 0.0},
         {"blow_start_time", s.blow_start_time},
         {"blow_start_toe", s.blow_start_toe},
+        {"last_blow_end_toe", s.last_blow_end_toe},
         {"low_set_blows", static_cast<double>(s.low_set_blows)},
         {"rest_since", s.rest_since},
         {"absorbed_energy", run.solver.absorbed_energy},
@@ -58,6 +59,8 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     run.driver.initial_snapshot_written = scalar("initial_snapshot_written") != 0.0;
     run.driver.blow_start_time = scalar("blow_start_time");
     run.driver.blow_start_toe = scalar("blow_start_toe");
+    for (const auto& [key, value] : info.scalars)  // a checkpoint before it: the next set counts from its blow's start
+        if (key == "last_blow_end_toe") run.driver.last_blow_end_toe = value;
     run.driver.low_set_blows = static_cast<int>(scalar("low_set_blows"));
     run.driver.rest_since = scalar("rest_since");
     run.solver.absorbed_energy = scalar("absorbed_energy");

@@ -59,15 +59,9 @@ void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, cons
     const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     if (!report.stopped) walls_.push_back({stage, now - stage_began_});
     if (!quiet_ && spec.blow && !report.stopped && body_) {
-        // The toe's depth below the seabed and the blow's set (from where the last blow left
-        // the toe, as blows.csv counts it; not known for the first blow after a resume).
-        const double toe = body_->toe_elevation();
-        char set[48] = "";
-        if (blow_seen_) std::snprintf(set, sizeof set, ", set %.1f mm", 1e3 * (last_blow_toe_ - toe));
-        std::printf("%s: toe %.3f m below the seabed%s, %ld steps, %.1f s\n", spec.name.c_str(), ground_ - toe, set,
-                    report.steps, now - stage_began_);
-        last_blow_toe_ = toe;
-        blow_seen_ = true;
+        // The toe's depth below the seabed and the blow's set (as blows.csv counts it).
+        std::printf("%s: toe %.3f m below the seabed, set %.1f mm, %ld steps, %.1f s\n", spec.name.c_str(),
+                    ground_ - body_->toe_elevation(), 1e3 * report.set, report.steps, now - stage_began_);
     }
     if (!quiet_ && spec.drive >= 0 && spec.consolidation && !report.stopped)  // a pause: its cost beside the blows'
         std::printf("%s: %ld implicit steps, %.1f s\n", spec.name.c_str(), report.steps, now - stage_began_);

@@ -79,8 +79,6 @@ private:
     std::vector<StageWallTime> walls_;
     double stage_began_ = 0.0;  // s on the steady clock
     double ground_ = 0.0;
-    double last_blow_toe_ = 0.0;  // m, the toe where the last blow left it (once blow_seen_)
-    bool blow_seen_ = false;
 };
 
 extern template class MpmRunOutput<2>;

@@ -9,6 +9,7 @@
 //   Field f of stored node n is entry n * fields + f.
 // - Supports, prescribed velocities, dashpots and walls are NodeConditions on the nodes
 //   they name; the solver looks them up through the stored node.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <unordered_map>
@@ -39,6 +40,24 @@ struct NodeCondition {
     // boundary a little instead of letting it creep for as long as the run lasts.
     double spring[3] = {0, 0, 0};
     double displacement[3] = {0, 0, 0};  // m, since the last static stage
+
+    // At the node's turn in a grid update: last step's reactions cleared; a static stage
+    // holds the boundary afresh (its force found again, its displacement counted from here).
+    void begin_update(bool static_stage) {
+        std::fill(reaction, reaction + 3, 0.0);
+        if (!static_stage) return;
+        std::fill(held_force, held_force + 3, 0.0);
+        std::fill(displacement, displacement + 3, 0.0);
+    }
+    // N: the far field's spring along d on the displacement so far (outside static stages).
+    double spring_force(int d) const { return -spring[d] * displacement[d]; }
+    // The boundary moved from v0 to v1 over dt under the spring's force f: its displacement
+    // grows, and the work done on the spring (J, stored in the far field) is returned.
+    double move_far_field(int d, double f, double v0, double v1, double dt) {
+        if (spring[d] <= 0.0) return 0.0;
+        displacement[d] += 0.5 * (v0 + v1) * dt;
+        return -0.5 * f * (v0 + v1) * dt;
+    }
 };
 
 template <int D>

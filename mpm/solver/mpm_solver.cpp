@@ -448,11 +448,7 @@ void MpmSolver<D>::update_grid(double dt) {
     residual_.assign(D * nf, 0.0);
     for (int n = 0; n < nodes; ++n) {
         NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
-        if (cond) std::fill(cond->reaction, cond->reaction + 3, 0.0);
-        if (cond && static_boundaries_) {
-            std::fill(cond->held_force, cond->held_force + 3, 0.0);
-            std::fill(cond->displacement, cond->displacement + 3, 0.0);
-        }
+        if (cond) cond->begin_update(static_boundaries_);
         bool held_given = false;  // a node's held force goes to its first field with mass
         for (int f = 0; f < fields; ++f) {
             const int nodef = n * fields + f;
@@ -466,7 +462,8 @@ void MpmSolver<D>::update_grid(double dt) {
                     continue;
                 }
                 const double v0 = g.momentum[k] / mass;
-                const double spring = held_share > 0.0 ? -cond->spring[d] * cond->displacement[d] : 0.0;
+                // The far field's push: the force it held at rest plus its spring.
+                const double spring = held_share > 0.0 ? cond->spring_force(d) : 0.0;
                 const double held = held_share > 0.0 ? cond->held_force[d] + spring : 0.0;
                 double force = g.force[k] + held;
                 const bool absorbing_held = cond && static_boundaries_ && cond->absorbing[d];
@@ -489,10 +486,7 @@ void MpmSolver<D>::update_grid(double dt) {
                 const double c = cond ? cond->dashpot[d] : 0.0;
                 double v1 = ((mass / dt - 0.5 * c) * v0 + force) / (mass / dt + 0.5 * c);
                 if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
-                if (held_share > 0.0 && cond->spring[d] > 0.0) {
-                    absorbed_ -= 0.5 * spring * (v0 + v1) * dt;  // stored in the far field's spring
-                    cond->displacement[d] += 0.5 * (v0 + v1) * dt;
-                }
+                if (held_share > 0.0) absorbed_ += cond->move_far_field(d, spring, v0, v1, dt);
                 external_work_ += 0.5 * (external_[k] + held - spring) * (v0 + v1) * dt;
                 g.velocity[k] = v1;
                 g.acceleration[k] = (v1 - v0) / dt;

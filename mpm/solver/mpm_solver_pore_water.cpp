@@ -114,11 +114,7 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
     residual_.assign(D * nf, 0.0);
     for (int n = 0; n < nodes; ++n) {
         NodeCondition* cond = g.condition_at[n] >= 0 ? &g.conditions[g.condition_at[n]] : nullptr;
-        if (cond) std::fill(cond->reaction, cond->reaction + 3, 0.0);
-        if (cond && static_boundaries_) {
-            std::fill(cond->held_force, cond->held_force + 3, 0.0);
-            std::fill(cond->displacement, cond->displacement + 3, 0.0);
-        }
+        if (cond) cond->begin_update(static_boundaries_);
         bool held_given = false;  // a node's held force goes to its first field pair with a skeleton
         for (int f = 0; f < fields; f += 2) {
             const int es = n * fields + f, ew = es + 1;
@@ -136,7 +132,8 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
             for (int d = 0; d < D; ++d) {
                 const int ks = D * es + d, kw = D * ew + d;
                 const double v0 = g.momentum[ks] / Ms, w0 = has_water ? g.momentum[kw] / Mnw : 0.0;
-                const double spring = held_share > 0.0 ? -cond->spring[d] * cond->displacement[d] : 0.0;
+                // The far field's push: the force it held at rest plus its spring.
+                const double spring = held_share > 0.0 ? cond->spring_force(d) : 0.0;
                 const double held = held_share > 0.0 ? cond->held_force[d] + spring : 0.0;
                 double Fs = g.force[ks] + held, Fw = has_water ? g.force[kw] : 0.0;
                 const double cs = cond ? cond->dashpot[d] : 0.0, cw = cond && has_water ? cond->water_dashpot[d] : 0.0;
@@ -182,10 +179,7 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
                     const double vm = 0.5 * (v0 + v1), wm = 0.5 * (w0 + w1), pm = phi * vm + porosity * wm;
                     absorbed_ += (cs * vm * vm + cw * pm * pm) * dt;
                 }
-                if (held_share > 0.0 && cond->spring[d] > 0.0 && !fixed_s) {
-                    absorbed_ -= 0.5 * spring * (v0 + v1) * dt;  // stored in the far field's spring
-                    cond->displacement[d] += 0.5 * (v0 + v1) * dt;
-                }
+                if (held_share > 0.0 && !fixed_s) absorbed_ += cond->move_far_field(d, spring, v0, v1, dt);
                 external_work_ += 0.5 * (external_[ks] + held - spring) * (v0 + v1) * dt;
                 if (has_water) external_work_ += 0.5 * external_[kw] * porosity * (w0 + w1 - v0 - v1) * dt;
                 g.velocity[ks] = v1;

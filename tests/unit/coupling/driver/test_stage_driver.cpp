@@ -64,6 +64,14 @@ StageSpec dynamic(const char* name, double duration) {
     return s;
 }
 
+// A blow of drive 0.
+StageSpec blow(double duration) {
+    StageSpec b = dynamic("blow", duration);
+    b.blow = true;
+    b.drive = 0;
+    return b;
+}
+
 double momentum_y(const StageDriver<2>& d) { return d.solver().momentum()[1]; }
 
 }  // namespace
@@ -301,13 +309,17 @@ TEST(StageDriver, ACheckpointWithFewerColumnsResumesWithTheNewOnesEmpty) {
 
 namespace {
 
-// A body that sinks `set` metres on the first step of every blow and is otherwise at rest.
+// A body that sinks `set` metres on the first step of every blow, `creep` on the first step
+// of every pause of a drive, and is otherwise at rest.
 class SinkingBody final : public CoupledBody<2> {
 public:
-    SinkingBody(const std::vector<StageSpec>& stages, double set) : stages_(stages), set_(set) {}
+    SinkingBody(const std::vector<StageSpec>& stages, double set, double creep = 0.0)
+        : stages_(stages), set_(set), creep_(creep) {}
     double stable_time_step(const mpm::MpmModel<2>&, double soil_dt) const override { return soil_dt; }
     void before_step(mpm::MpmModel<2>&, int stage, bool, double, double time_in_stage) override {
-        if (stages_[stage].blow && time_in_stage == 0.0) toe_ -= set_;
+        if (time_in_stage != 0.0) return;
+        if (stages_[stage].blow) toe_ -= set_;
+        else if (stages_[stage].drive >= 0) toe_ -= creep_;
     }
     void come_to_rest() override {}
     void set_gravity_factor(double) override {}
@@ -318,8 +330,17 @@ public:
 
 private:
     std::vector<StageSpec> stages_;
-    double set_;
+    double set_, creep_;
     double toe_ = 1.0;
+};
+
+// The sets a driver reports at each blow's end.
+class SetsSeen final : public StageObserver<2> {
+public:
+    void stage_end(int, const StageSpec& spec, const StageReport& report) override {
+        if (spec.blow) sets.push_back(report.set);
+    }
+    std::vector<double> sets;
 };
 
 // Five blows of a drive (each ends once the body is at rest after 2 ms, not at its 10 ms),
@@ -329,9 +350,7 @@ std::vector<double> drive_stages_run(double set, double target, double refusal_s
     auto m = block();
     std::vector<StageSpec> stages;
     for (int k = 0; k < 5; ++k) {
-        StageSpec b = dynamic("blow", 0.01);
-        b.blow = true;
-        b.drive = 0;
+        StageSpec b = blow(0.01);
         b.rest_speed = 1e-3;
         b.min_duration = 0.002;
         b.end_toe_elevation = target;
@@ -372,6 +391,29 @@ TEST(StageDriver, ADriveEndsAtRefusal) {
     double end = 0.0;
     EXPECT_EQ(drive_stages_run(0.001, -1e300, 0.002, 2, end), (std::vector<double>{1, 2, 6}));
     EXPECT_EQ(drive_stages_run(0.003, -1e300, 0.002, 2, end), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+}
+
+// A blow's set counts from where the last blow left the toe, as it is read in the field and
+// blows.csv counts it: 4 mm blows with 1 mm of creep in each pause report 4, 5, 5 mm.
+TEST(StageDriver, ABlowsSetTakesThePausesCreepBeforeIt) {
+    auto m = block();
+    std::vector<StageSpec> stages;
+    for (int k = 0; k < 3; ++k) {
+        StageSpec pause = dynamic("pause", 0.001);
+        pause.drive = 0;
+        stages.push_back(blow(0.002));
+        stages.push_back(pause);
+    }
+    SinkingBody body(stages, 0.004, 0.001);
+    SetsSeen seen;
+    StageDriver<2> d(m, stages, {}, {}, &seen);
+    d.couple(&body);
+    d.run();
+    ASSERT_EQ(seen.sets.size(), 3u);
+    EXPECT_NEAR(seen.sets[0], 0.004, 1e-15);
+    EXPECT_NEAR(seen.sets[1], 0.005, 1e-15);
+    EXPECT_NEAR(seen.sets[2], 0.005, 1e-15);
+    EXPECT_NEAR(d.state().last_blow_end_toe, 1.0 - 3 * 0.004 - 2 * 0.001, 1e-15);
 }
 
 // A blow with settle_damping: undamped while its wave runs (min_duration), then the soil's
