@@ -146,63 +146,86 @@ void copy_out(const MultiVector& mv, std::vector<double>& v) {
     std::copy(data.begin(), data.end(), v.begin());
 }
 
-RCP<Operator> make_preconditioner(const SolverOptions& o, const RCP<CrsMatrix>& a) {
-    if (o.preconditioner == Preconditioner::multigrid) {
-        Teuchos::ParameterList p;
-        p.set("verbosity", "none");
-        p.set("multigrid algorithm", "sa");
-        p.set("problem: symmetric", o.multigrid_symmetric);
-        p.set("smoother: type", "RELAXATION");
-        p.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
-        p.sublist("smoother: params").set("relaxation: sweeps", 1);
-        p.set("coarse: type", "KLU2");
-        RCP<Operator> op = a;
-        return MueLu::CreateTpetraPreconditioner(op, p);
-    }
+using IfpackPreconditioner = Ifpack2::Preconditioner<double, LO, GO, Node>;
+
+// MueLu's smoothed-aggregation hierarchy on a, built afresh.
+RCP<Operator> make_multigrid(const SolverOptions& o, const RCP<CrsMatrix>& a) {
+    Teuchos::ParameterList p;
+    p.set("verbosity", "none");
+    p.set("multigrid algorithm", "sa");
+    p.set("problem: symmetric", o.multigrid_symmetric);
+    p.set("smoother: type", "RELAXATION");
+    p.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+    p.sublist("smoother: params").set("relaxation: sweeps", 1);
+    p.set("coarse: type", "KLU2");
+    RCP<Operator> op = a;
+    return MueLu::CreateTpetraPreconditioner(op, p);
+}
+
+// The Ifpack2 operator o asks for on a (relaxation, ILU, ILUT, or KLU2 for direct),
+// initialised (its symbolic part: ILU's fill graph, the LU's ordering) but not computed;
+// null for none and multigrid.
+RCP<IfpackPreconditioner> make_ifpack2(const SolverOptions& o, const RCP<CrsMatrix>& a) {
     std::string type;
     Teuchos::ParameterList p;
-    switch (o.preconditioner) {
-        case Preconditioner::jacobi:
-            type = "RELAXATION";
-            p.set("relaxation: type", "Jacobi");
-            p.set("relaxation: sweeps", o.relaxation_sweeps);
-            p.set("relaxation: damping factor", o.relaxation_damping);
-            break;
-        case Preconditioner::ilu:
-            type = "RILUK";
-            p.set("fact: iluk level-of-fill", o.ilu_level);
-            break;
-        case Preconditioner::ilut:
-            type = "ILUT";
-            p.set("fact: ilut level-of-fill", o.ilut_fill);
-            p.set("fact: drop tolerance", o.ilut_drop_tolerance);
-            break;
-        default: return Teuchos::null;
+    if (o.method == KrylovMethod::direct) {
+        type = "AMESOS2";
+        p.sublist("Amesos2");  // Ifpack2 wants a sublist "Amesos2", even an empty one
+        p.set("Amesos2 solver name", "KLU2");
+    } else {
+        switch (o.preconditioner) {
+            case Preconditioner::jacobi:
+                type = "RELAXATION";
+                p.set("relaxation: type", "Jacobi");
+                p.set("relaxation: sweeps", o.relaxation_sweeps);
+                p.set("relaxation: damping factor", o.relaxation_damping);
+                break;
+            case Preconditioner::ilu:
+                type = "RILUK";
+                p.set("fact: iluk level-of-fill", o.ilu_level);
+                break;
+            case Preconditioner::ilut:
+                type = "ILUT";
+                p.set("fact: ilut level-of-fill", o.ilut_fill);
+                p.set("fact: drop tolerance", o.ilut_drop_tolerance);
+                break;
+            default: return Teuchos::null;
+        }
     }
     auto prec = Ifpack2::Factory::create<RowMatrix>(type, a);
     prec->setParameters(p);
     prec->initialize();
-    prec->compute();
     return prec;
+}
+
+// Options that change what make_ifpack2 builds (not the tolerances).
+bool same_setup(const SolverOptions& a, const SolverOptions& b) {
+    return a.method == b.method && a.preconditioner == b.preconditioner && a.ilu_level == b.ilu_level &&
+           a.ilut_fill == b.ilut_fill && a.ilut_drop_tolerance == b.ilut_drop_tolerance &&
+           a.relaxation_sweeps == b.relaxation_sweeps && a.relaxation_damping == b.relaxation_damping;
+}
+
+// a's values into a matrix of its pattern: its graph, and so what was initialised on it, stays.
+void replace_values(const SparseMatrix& a, CrsMatrix& m, const RCP<const Map>& map) {
+    m.resumeFill();
+    const auto& start = a.row_start();
+    for (int row = 0; row < a.size(); ++row) {
+        const auto first = static_cast<Teuchos::ArrayView<const LO>::size_type>(start[row]);
+        const auto count = static_cast<Teuchos::ArrayView<const LO>::size_type>(start[row + 1] - start[row]);
+        if (count == 0) continue;
+        const Teuchos::ArrayView<const LO> cols(a.columns().data() + first, count);
+        const Teuchos::ArrayView<const double> vals(a.values().data() + first, count);
+        if (m.replaceLocalValues(row, cols, vals) != count)
+            throw std::runtime_error("row " + std::to_string(row) + " is not in the kept pattern");
+    }
+    m.fillComplete(map, map);
 }
 
 // x = LU \ b, then up to two steps of iterative refinement while the residual is above the
 // tolerance. Returns the number of triangular solves.
-int direct_solve(const SparseMatrix& a, const RCP<CrsMatrix>& ta, const std::vector<double>& b,
-                 std::vector<double>& x, const SolverOptions& o, const std::string& what,
-                 SolveReport& report) {
-    const auto start = std::chrono::steady_clock::now();
-    auto lu = guarded(what, "factorisation", [&] {
-        auto prec = Ifpack2::Factory::create<RowMatrix>("AMESOS2", ta);
-        Teuchos::ParameterList p;  // Ifpack2 wants a sublist "Amesos2", even an empty one
-        p.sublist("Amesos2");
-        p.set("Amesos2 solver name", "KLU2");
-        prec->setParameters(p);
-        prec->initialize();
-        prec->compute();
-        return prec;
-    });
-    report.setup_seconds += seconds_since(start);
+int direct_solve(const SparseMatrix& a, const RCP<CrsMatrix>& ta, const RCP<IfpackPreconditioner>& lu,
+                 const std::vector<double>& b, std::vector<double>& x, const SolverOptions& o,
+                 const std::string& what, SolveReport& report) {
     const auto solve_start = std::chrono::steady_clock::now();
     MultiVector r(ta->getRangeMap(), 1), dx(ta->getDomainMap(), 1);
     std::vector<double> residual = b, ax(b.size()), correction(b.size());
@@ -222,13 +245,8 @@ int direct_solve(const SparseMatrix& a, const RCP<CrsMatrix>& ta, const std::vec
     return solves;
 }
 
-int krylov_solve(const RCP<CrsMatrix>& ta, const std::vector<double>& b, std::vector<double>& x,
-                 const SolverOptions& o, const std::string& what, SolveReport& report) {
-    const auto start = std::chrono::steady_clock::now();
-    RCP<Operator> prec =
-        guarded(what, "preconditioner setup", [&] { return make_preconditioner(o, ta); });
-    report.setup_seconds += seconds_since(start);
-
+int krylov_solve(const RCP<CrsMatrix>& ta, const RCP<Operator>& prec, const std::vector<double>& b,
+                 std::vector<double>& x, const SolverOptions& o, const std::string& what, SolveReport& report) {
     const auto solve_start = std::chrono::steady_clock::now();
     auto tb = rcp(new MultiVector(ta->getRangeMap(), 1));
     auto tx = rcp(new MultiVector(ta->getDomainMap(), 1));
@@ -391,8 +409,27 @@ std::string to_string(Preconditioner preconditioner) {
     return "?";
 }
 
-SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vector<double>& x,
-                  const SolverOptions& options) {
+// --- LinearSolver ----------------------------------------------------------------------------
+
+struct LinearSolver::Kept {
+    RCP<const Map> map;
+    RCP<CrsMatrix> matrix;
+    RCP<IfpackPreconditioner> prec;  // initialised on matrix's graph; null: none, multigrid
+    std::vector<std::size_t> row_start;
+    std::vector<int> columns;
+    SolverOptions options;
+    int reused = 0;
+};
+
+LinearSolver::LinearSolver() = default;
+LinearSolver::~LinearSolver() = default;
+LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
+LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
+
+int LinearSolver::reused() const { return kept_ ? kept_->reused : 0; }
+
+SolveReport LinearSolver::solve(const SparseMatrix& a, const std::vector<double>& b, std::vector<double>& x,
+                                const SolverOptions& options) {
     const std::size_t n = static_cast<std::size_t>(a.size());
     if (x.empty()) x.assign(n, 0.0);
     if (b.size() != n || x.size() != n)
@@ -421,17 +458,49 @@ SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vect
     static std::mutex mutex;
     const std::lock_guard<std::mutex> lock(mutex);
     initialise_trilinos();
-    const auto start = std::chrono::steady_clock::now();
-    auto ta = guarded(what, "matrix copy", [&] {
-        RCP<const Map> map = rcp(new Map(static_cast<Tpetra::global_size_t>(n), GO{0},
-                                         rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF))));
-        return to_tpetra(a, map);
-    });
-    report.setup_seconds = seconds_since(start);
-
-    report.iterations = options.method == KrylovMethod::direct
-                            ? direct_solve(a, ta, b, x, options, what, report)
-                            : krylov_solve(ta, b, x, options, what, report);
+    const bool direct = options.method == KrylovMethod::direct;
+    const bool multigrid = !direct && options.preconditioner == Preconditioner::multigrid;
+    // Only the very same pattern: a larger kept one would give an ILU of other fill than a
+    // fresh solve's, and a run resumed between two solves would not end as it would have.
+    const bool keep = kept_ && kept_->matrix != Teuchos::null && same_setup(kept_->options, options) &&
+                      kept_->row_start == a.row_start() && kept_->columns == a.columns();
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        if (!kept_) kept_ = std::make_unique<Kept>();
+        Kept& k = *kept_;
+        if (keep) {
+            guarded(what, "matrix copy", [&] { replace_values(a, *k.matrix, k.map); });
+            ++k.reused;
+            report.setup_kept = true;
+        } else {
+            guarded(what, "matrix copy", [&] {
+                k.map = rcp(new Map(static_cast<Tpetra::global_size_t>(n), GO{0},
+                                    rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF))));
+                k.matrix = to_tpetra(a, k.map);
+            });
+            k.row_start = a.row_start();
+            k.columns = a.columns();
+            k.options = options;
+            k.prec = Teuchos::null;
+        }
+        const std::string setup = direct ? "factorisation" : "preconditioner setup";
+        RCP<Operator> prec;
+        guarded(what, setup, [&] {
+            if (multigrid) {
+                prec = make_multigrid(options, k.matrix);
+                return;
+            }
+            if (!keep) k.prec = make_ifpack2(options, k.matrix);
+            if (k.prec != Teuchos::null) k.prec->compute();  // the values, on the kept symbolic set-up
+            prec = k.prec;
+        });
+        report.setup_seconds = seconds_since(start);
+        report.iterations = direct ? direct_solve(a, k.matrix, k.prec, b, x, options, what, report)
+                                   : krylov_solve(k.matrix, prec, b, x, options, what, report);
+    } catch (...) {
+        kept_.reset();  // half set up: the next solve starts afresh
+        throw;
+    }
 
     std::vector<double> ax;
     a.multiply(x, ax);
@@ -441,6 +510,11 @@ SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vect
     report.converged = std::isfinite(report.relative_residual) &&
                        report.relative_residual <= options.relative_tolerance;
     return report;
+}
+
+SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vector<double>& x,
+                  const SolverOptions& options) {
+    return LinearSolver().solve(a, b, x, options);
 }
 
 }  // namespace pilempm::core

@@ -12,6 +12,7 @@
 // row, sets b to the prescribed value and moves the known column entries to b (or leaves
 // them, making the matrix nonsymmetric: then use GMRES or BiCGStab, not CG).
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,7 @@ struct SolveReport {
     std::string preconditioner;  // e.g. "ILU(0)", "Jacobi x1", "MueLu SA", "none"
     double setup_seconds = 0.0;  // the matrix copy and the preconditioner (or factorisation)
     double solve_seconds = 0.0;  // the iterations (or the triangular solves)
+    bool setup_kept = false;     // a LinearSolver's symbolic set-up from its last solve
 };
 
 // Solves A x = b with x, on input, as the initial guess (resized to n with zeros when empty;
@@ -109,6 +111,30 @@ struct SolveReport {
 // zero pivot in the factorisation of a singular matrix).
 SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vector<double>& x,
                   const SolverOptions& options = {});
+
+// Systems solved one after another, as solve() solves each, keeping the preconditioner's
+// (or the factorisation's) symbolic set-up while the matrix's pattern and the options stay
+// the same: then only the new values are copied in and factorised (Ifpack2's compute()
+// without initialize(): ILU's fill graph, the LU's ordering). Each answer is solve()'s to the
+// bit, so a run resumed between two solves ends as it would have. The implicit steps of a
+// consolidation pause share their pattern but when a point's stencil gains or loses a node.
+// MueLu's hierarchy is built afresh each time.
+class LinearSolver {
+public:
+    LinearSolver();
+    ~LinearSolver();
+    LinearSolver(LinearSolver&&) noexcept;
+    LinearSolver& operator=(LinearSolver&&) noexcept;
+
+    SolveReport solve(const SparseMatrix& a, const std::vector<double>& b, std::vector<double>& x,
+                      const SolverOptions& options = {});
+    // Solves that kept the last set-up (for tests and logs).
+    int reused() const;
+
+private:
+    struct Kept;  // the Trilinos objects and the pattern they were built for
+    std::unique_ptr<Kept> kept_;
+};
 
 // "GMRES", "CG", "BiCGStab", "direct"; "none", "Jacobi", "ILU", "ILUT", "multigrid".
 std::string to_string(KrylovMethod method);

@@ -222,6 +222,9 @@ bool StageDriver<D>::run_consolidation(const StageSpec& st, const StopRequest* s
         const mpm::ConsolidationStepReport step = consolidation.step(dt);
         if (body_) body_->follow_soil(m_, x_before_);
         last_consolidation_ = step;
+        report.linear_solve_seconds += step.solve.setup_seconds + step.solve.solve_seconds;
+        ++report.solves;
+        report.setups_kept += step.solve.setup_kept ? 1 : 0;
         solver_.set_time(solver_.time() + dt, solver_.steps() + 1);
         solver_.set_unbalanced_force_ratio(step.unbalanced_ratio);
         state_.stage_steps = n + 1;

@@ -52,6 +52,10 @@ struct StageReport {
     bool in_equilibrium = false;  // quasi-static: the tolerance was met
     bool stopped = false;         // a stop request ended the stage early
     double set = std::numeric_limits<double>::quiet_NaN();  // m, a blow's (as blows.csv counts it)
+    // Consolidation: the linear solves' wall time (set-up and iterations) and how many kept
+    // the last one's set-up (its pattern unchanged), since the stage began or resumed.
+    double linear_solve_seconds = 0.0;
+    int solves = 0, setups_kept = 0;
 };
 
 template <int D>

@@ -64,7 +64,9 @@ void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, cons
                     ground_ - body_->toe_elevation(), 1e3 * report.set, report.steps, now - stage_began_);
     }
     if (!quiet_ && spec.drive >= 0 && spec.consolidation && !report.stopped)  // a pause: its cost beside the blows'
-        std::printf("%s: %ld implicit steps, %.1f s\n", spec.name.c_str(), report.steps, now - stage_began_);
+        std::printf("%s: %ld implicit steps, %.1f s (linear solves %.1f s, %d of %d on a kept set-up)\n",
+                    spec.name.c_str(), report.steps, now - stage_began_, report.linear_solve_seconds, report.setups_kept,
+                    report.solves);
     if (!quiet_ && spec.quasi_static && !report.stopped)
         std::printf("stage '%s': %ld steps, unbalanced force ratio %.3g (tolerance %.3g)%s\n", spec.name.c_str(),
                     report.steps, report.unbalanced_ratio, spec.tolerance,

@@ -283,12 +283,12 @@ ConsolidationStepReport ConsolidationSolver<D>::step(double dt) {
     report.unbalanced_ratio = unbalanced_ratio;
     core::SolverOptions options = options_;
     if (n_dof < direct_below_) options.method = core::KrylovMethod::direct;
-    report.solve = core::solve(A, rhs, x, options);
+    report.solve = linear_.solve(A, rhs, x, options);
     if (!report.solve.converged && options.method != core::KrylovMethod::direct) {
         core::SolverOptions direct = options_;
         direct.method = core::KrylovMethod::direct;
         x.assign(n_dof, 0.0);
-        report.solve = core::solve(A, rhs, x, direct);
+        report.solve = fallback_.solve(A, rhs, x, direct);
         if (!report.solve.converged)
             throw std::runtime_error("consolidation step: the linear solve did not converge (relative residual " +
                                      std::to_string(report.solve.relative_residual) + " with " + report.solve.method +

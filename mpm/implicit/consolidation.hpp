@@ -46,6 +46,8 @@ private:
     std::vector<std::vector<int>> points_of_material_;
     std::vector<int> void_ratio_state_;  // per material (-1: none)
     std::vector<core::Triplet> triplets_, flow_;  // the step's assembly, reused
+    // The steps' solves keep their symbolic set-up while the pattern stays (a pause's steps).
+    core::LinearSolver linear_, fallback_;
 };
 
 extern template class ConsolidationSolver<2>;

@@ -107,8 +107,9 @@ struct SaddlePoint {
     int m = 0;
     bool symmetric = true;
     double s = 0.1, dt = 0.5;
+    int uncoupled = -1;  // p_j of this j not coupled to u_{j+1}: one entry fewer in each off-diagonal block
     double k(int i, int j) const { return i == j ? 2.0 : std::abs(i - j) == 1 ? -1.0 : 0.0; }
-    double q(int i, int j) const { return i == j ? 1.0 : i == j + 1 ? -1.0 : 0.0; }
+    double q(int i, int j) const { return i == j ? 1.0 : i == j + 1 && j != uncoupled ? -1.0 : 0.0; }
     double sp(int i, int j) const { return (i == j ? s : 0.0) + dt * k(i, j); }
 
     SparseMatrix matrix() const {
@@ -312,4 +313,70 @@ TEST(SparseLinearSolver, IterationLimitAndInitialGuess) {
     EXPECT_TRUE(zero.converged);
     EXPECT_EQ(zero.iterations, 0);
     EXPECT_EQ(x, std::vector<double>(b.size(), 0.0));
+}
+
+// One LinearSolver through a sequence of u-p systems of one pattern and new values (the
+// steps of a consolidation pause: S and dt change): each is solved to x_exact, exactly as a
+// fresh solve() solves it (the values reach the kept ILU, LU, relaxation); the symbolic set-up
+// is kept while pattern and options stay, and built anew when either changes.
+TEST(SparseLinearSolver, ASolverKeepsItsSetUpWhileThePatternStaysAndSolvesAsAFreshOne) {
+    for (const auto& [method, preconditioner] :
+         {std::pair{KrylovMethod::gmres, Preconditioner::ilu},
+          std::pair{KrylovMethod::bicgstab, Preconditioner::ilut},
+          std::pair{KrylovMethod::gmres, Preconditioner::jacobi},
+          std::pair{KrylovMethod::direct, Preconditioner::none}}) {
+        // Jacobi preconditions this saddle point poorly: a looser tolerance, and the error with it.
+        const bool jacobi = preconditioner == Preconditioner::jacobi;
+        SolverOptions o = options(method, preconditioner, jacobi ? 1e-9 : 1e-12);
+        o.ilu_level = 1;
+        o.max_iterations = 5000;
+        LinearSolver kept;
+        int solves = 0;
+        for (const int m : {200, 200, 200, 201}) {  // the last: another pattern
+            SaddlePoint sp;
+            sp.m = m;
+            sp.symmetric = false;
+            sp.s = 0.1 + 0.05 * solves;
+            sp.dt = 0.5 / (1.0 + solves);
+            const std::vector<double> x_exact = sp.exact(), b = sp.rhs(x_exact);
+            std::vector<double> x, fresh;
+            const SolveReport r = kept.solve(sp.matrix(), b, x, o);
+            solve(sp.matrix(), b, fresh, o);
+            EXPECT_TRUE(r.converged) << r.method << " + " << r.preconditioner << ", solve " << solves;
+            EXPECT_LT(relative_error(x, x_exact), jacobi ? 1e-5 : 1e-8) << r.method << " + " << r.preconditioner;
+            EXPECT_EQ(x, fresh) << r.method << " + " << r.preconditioner << ", solve " << solves;
+            ++solves;
+        }
+        EXPECT_EQ(kept.reused(), 2) << to_string(method) << " + " << to_string(preconditioner);
+    }
+    // Another pattern (an entry gone from each off-diagonal block, then back): built anew each
+    // time it changes, kept when it returns to the last one, and solved to x_exact throughout.
+    SolverOptions o = options(KrylovMethod::gmres, Preconditioner::ilu);
+    o.ilu_level = 1;
+    LinearSolver changing;
+    for (const auto& [uncoupled, kept_expected] : {std::pair{-1, false}, std::pair{17, false}, std::pair{17, true},
+                                                   std::pair{-1, false}}) {
+        SaddlePoint sp;
+        sp.m = 200;
+        sp.symmetric = false;
+        sp.uncoupled = uncoupled;
+        const std::vector<double> x_exact = sp.exact(), b = sp.rhs(x_exact);
+        std::vector<double> x;
+        const SolveReport r = changing.solve(sp.matrix(), b, x, o);
+        EXPECT_TRUE(r.converged) << "uncoupled " << uncoupled;
+        EXPECT_LT(relative_error(x, x_exact), 1e-8) << "uncoupled " << uncoupled;
+        EXPECT_EQ(r.setup_kept, kept_expected) << "uncoupled " << uncoupled;
+    }
+    // Other options on the same pattern: built anew.
+    SaddlePoint sp;
+    sp.m = 100;
+    sp.symmetric = false;
+    const std::vector<double> x_exact = sp.exact(), b = sp.rhs(x_exact);
+    LinearSolver kept;
+    std::vector<double> x;
+    kept.solve(sp.matrix(), b, x, options(KrylovMethod::gmres, Preconditioner::ilu));
+    x.clear();
+    const SolveReport r = kept.solve(sp.matrix(), b, x, options(KrylovMethod::direct, Preconditioner::none));
+    EXPECT_EQ(kept.reused(), 0);
+    EXPECT_LT(relative_error(x, x_exact), 1e-8) << r.method;
 }
