@@ -471,7 +471,7 @@ SolveReport LinearSolver::solve(const SparseMatrix& a, const std::vector<double>
         if (keep) {
             guarded(what, "matrix copy", [&] { replace_values(a, *k.matrix, k.map); });
             ++k.reused;
-            report.setup_kept = true;
+            report.setup_kept = !multigrid;  // MueLu's hierarchy is built afresh all the same
         } else {
             guarded(what, "matrix copy", [&] {
                 k.map = rcp(new Map(static_cast<Tpetra::global_size_t>(n), GO{0},
