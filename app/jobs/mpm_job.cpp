@@ -280,7 +280,12 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     if (resume) {
         const fs::path file = staged.path() / "checkpoint.h5";
         if (!staged.adopted() || !fs::exists(file))
-            throw std::runtime_error("nothing to resume: no checkpoint in " + staged.incomplete_path().string());
+            throw std::runtime_error("nothing to resume: no checkpoint in " + staged.incomplete_path().string() +
+                                     " nor in a " + staged.final_path().filename().string() +
+                                     ".partial-PID folder left by a killed run");
+        if (!quiet && staged.adopted_from() != staged.incomplete_path())
+            std::fprintf(stderr, "pilempm: resuming from the checkpoint a killed run left in %s\n",
+                         staged.adopted_from().c_str());
         restored = io::read_run_checkpoint<D>(file, m.particles);
         if (restored.case_fingerprint != fingerprint(c))
             throw std::runtime_error("the checkpoint in " + staged.incomplete_path().string() + " belongs to another case");

@@ -296,6 +296,35 @@ TEST(MpmResume, SaturatedRunStoppedInItsSecondBlowResumedWritesWhatAnUninterrupt
     fs::remove_all(dir);
 }
 
+// A run killed outright (SIGKILL: no handler, no checkpoint on the way out, its staging
+// folder not renamed) in its second blow: --resume finds the DIR.partial-PID it left,
+// carries on from the checkpoint at the end of the first blow's pause and writes what the
+// uninterrupted run writes.
+TEST(MpmResume, ASaturatedRunKilledOutrightResumesFromTheFolderItLeft) {
+    const fs::path dir = fresh_dir("killed");
+    const fs::path file = dir / "blow-pause-blow.yaml";
+    std::ofstream(file) << kBlowPauseBlow;
+    const std::string exe = PILEMPM_EXECUTABLE;
+    ASSERT_EQ(run(exe + " run " + file.string() + " --out " + (dir / "whole").string() + " --quiet"), 0);
+    EXPECT_NE(run("PILEMPM_INTERRUPT_AFTER_STEPS=450 PILEMPM_INTERRUPT_SIGNAL=" + std::to_string(SIGKILL) + " " + exe +
+                  " run " + file.string() + " --out " + (dir / "split").string() + " --quiet 2>/dev/null"),
+              0);
+    EXPECT_FALSE(fs::exists(dir / "split"));
+    EXPECT_FALSE(fs::exists(dir / "split.incomplete"));
+    int left = 0;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename().string().rfind("split.partial-", 0) == 0) {
+            ++left;
+            EXPECT_TRUE(fs::exists(entry.path() / "checkpoint.h5"));
+        }
+    ASSERT_EQ(left, 1);
+    ASSERT_EQ(run(exe + " run " + file.string() + " --out " + (dir / "split").string() + " --quiet --resume"), 0);
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find("split."), std::string::npos) << entry.path();
+    expect_same_outputs(dir / "whole", dir / "split");
+    fs::remove_all(dir);
+}
+
 TEST(MpmResume, InterruptedDynamicRunResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("flip");
     check_resume(dir, wave_case(dir, false), SIGINT, 100);
