@@ -324,9 +324,11 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             });
             if (resume) pile_vtk->adopt_written_steps(restored.snapshot_times);
             // A long drive can be followed: its tables so far beside each checkpoint.
-            output.also_at_checkpoints([&c, &run, &staged](const coupling::DriverState& state, const Table& history) {
-                write_drive_tables(c, run, history, staged.path(), static_cast<std::size_t>(state.stage));
-            });
+            output.also_at_checkpoints(
+                [&c, &run, &staged, &pile_vtk](const coupling::DriverState& state, const Table& history) {
+                    write_drive_tables(c, run, history, staged.path(), static_cast<std::size_t>(state.stage));
+                    pile_vtk->finish();
+                });
         }
     }
     if (resume) {

@@ -37,6 +37,7 @@ void MpmRunOutput<D>::checkpoint(const coupling::DriverState& state, const mpm::
     run.case_fingerprint = fingerprint_;
     if (body_) run.body = body_->state();
     write_run_checkpoint<D>(checkpoint_path(), model.particles, run);
+    vtk_.finish();  // the series so far opens in ParaView while the run goes on, or after a kill
     staged_.keep_if_failed();
     if (also_at_checkpoint_) also_at_checkpoint_(state, history);
 }

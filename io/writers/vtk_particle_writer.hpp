@@ -13,7 +13,8 @@
 
 namespace pilempm::io {
 
-// Writes dir/<basename>_NNNNNN.vtu per write() and dir/<basename>.pvd on finish().
+// Writes dir/<basename>_NNNNNN.vtu per write() and dir/<basename>.pvd on finish() (a run
+// calls it at each checkpoint and at its end).
 // Points are padded to 3-D: in 2-D (x, y) -> (x, y, 0), y up (x = r when axisymmetric).
 // Point data of every step:
 //   velocity     3 components (2-D padded with 0), m/s

@@ -296,14 +296,13 @@ TEST(MpmResume, SaturatedRunStoppedInItsSecondBlowResumedWritesWhatAnUninterrupt
     fs::remove_all(dir);
 }
 
-// A run killed outright (SIGKILL: no handler, no checkpoint on the way out, its staging
-// folder not renamed) in its second blow: --resume finds the DIR.partial-PID it left,
-// carries on from the checkpoint at the end of the first blow's pause and writes what the
-// uninterrupted run writes.
-TEST(MpmResume, ASaturatedRunKilledOutrightResumesFromTheFolderItLeft) {
+// A drive killed outright (SIGKILL: no handler, no checkpoint on the way out, its staging
+// folder not renamed) in its second blow: the folder it left holds the VTK series up to its
+// last checkpoint (the end of the first pause), and --resume finds that DIR.partial-PID,
+// carries on from the checkpoint and writes what the uninterrupted drive writes.
+TEST(MpmResume, ADriveKilledOutrightResumesFromTheFolderItLeft) {
     const fs::path dir = fresh_dir("killed");
-    const fs::path file = dir / "blow-pause-blow.yaml";
-    std::ofstream(file) << kBlowPauseBlow;
+    const fs::path file = two_blow_drive(dir, "drive.yaml");
     const std::string exe = PILEMPM_EXECUTABLE;
     ASSERT_EQ(run(exe + " run " + file.string() + " --out " + (dir / "whole").string() + " --quiet"), 0);
     EXPECT_NE(run("PILEMPM_INTERRUPT_AFTER_STEPS=450 PILEMPM_INTERRUPT_SIGNAL=" + std::to_string(SIGKILL) + " " + exe +
@@ -316,6 +315,16 @@ TEST(MpmResume, ASaturatedRunKilledOutrightResumesFromTheFolderItLeft) {
         if (entry.path().filename().string().rfind("split.partial-", 0) == 0) {
             ++left;
             EXPECT_TRUE(fs::exists(entry.path() / "checkpoint.h5"));
+            // The series as far as the checkpoint opens in ParaView: its .pvd lists files that are there.
+            for (const char* series : {"particles.pvd", "pile.pvd"}) {
+                const std::string pvd = read_file(entry.path() / "vtk" / series);
+                int listed = 0;
+                for (auto at = pvd.find("file=\""); at != std::string::npos; at = pvd.find("file=\"", at + 1), ++listed) {
+                    const auto from = at + 6;
+                    EXPECT_TRUE(fs::exists(entry.path() / "vtk" / pvd.substr(from, pvd.find('"', from) - from)));
+                }
+                EXPECT_GE(listed, 2) << series;
+            }
         }
     ASSERT_EQ(left, 1);
     ASSERT_EQ(run(exe + " run " + file.string() + " --out " + (dir / "split").string() + " --quiet --resume"), 0);
