@@ -28,7 +28,8 @@ fs::path orphaned_staging(const fs::path& final_dir) {
         const std::string digits = name.substr(prefix.size());
         if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
         const long pid = std::stol(digits);
-        if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        // Ours too (a PID reused since, after a reboot): the folder predates this process.
+        if (pid != ::getpid() && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)) continue;
         const auto when = fs::last_write_time(entry.path() / "checkpoint.h5", ec);
         if (ec) continue;  // nothing to resume from in it
         if (newest.empty() || when > newest_time) newest = entry.path(), newest_time = when;
@@ -43,12 +44,12 @@ StagedDirectory::StagedDirectory(fs::path final_dir, bool adopt_incomplete) : fi
     const fs::path parent = final_.has_parent_path() ? final_.parent_path() : fs::path(".");
     fs::create_directories(parent);
     staging_ = parent / (final_.filename().string() + ".partial-" + std::to_string(::getpid()));
-    fs::remove_all(staging_);
     const fs::path left = !adopt_incomplete               ? fs::path()
                           : fs::is_directory(incomplete_path()) ? incomplete_path()
                                                                 : orphaned_staging(final_);
+    if (left != staging_) fs::remove_all(staging_);
     if (!left.empty()) {
-        fs::rename(left, staging_);
+        if (left != staging_) fs::rename(left, staging_);
         // A killed run may have died writing a file: its .tmp never became the file.
         std::error_code ec;
         for (auto it = fs::recursive_directory_iterator(staging_, ec); !ec && it != fs::recursive_directory_iterator();
