@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "coupling/contact/plug_surface.hpp"
+
 namespace pilempm::coupling {
 
 namespace {
@@ -25,8 +27,8 @@ ToeExtent toe_extent(const CoupledPile& pile, double cell) {
 // In one pass over the points: the mean excess pore pressure of those within a cell of the
 // toe's annulus and a cell and a half below it, and of those within a cell outside the
 // shaft in each third of its embedded length, the upper first (0 when dry or none there);
-// and an open pile's soil plug, from the toe to the highest point inside the wall (a
-// quarter of a cell clear of it; 0 for a closed pile).
+// and an open pile's soil plug, from the toe to the mean level of the soil's surface inside
+// the wall (rings a cell wide to a quarter of a cell clear of it; 0 for a closed pile).
 struct AtPile {
     double pore_pressure = 0.0, plug_length = 0.0;
     double shaft_pore_pressure[3] = {0.0, 0.0, 0.0};
@@ -36,7 +38,8 @@ AtPile at_pile(const mpm::MpmModel<2>& m, const ToeExtent& t, double h, double g
     const auto& p = m.particles;
     const bool wet = !p.pore_pressure.empty(), open = t.inner >= 0.25 * h;
     const double embedded = ground - t.elevation;
-    double sum = 0.0, top = t.elevation, shaft[3] = {0.0, 0.0, 0.0};
+    double sum = 0.0, shaft[3] = {0.0, 0.0, 0.0};
+    PlugSurface plug(open ? t.inner - 0.25 * h : 0.0, h);
     int n = 0, shaft_n[3] = {0, 0, 0};
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = p.x[2 * i], z = p.x[2 * i + 1];
@@ -46,9 +49,9 @@ AtPile at_pile(const mpm::MpmModel<2>& m, const ToeExtent& t, double h, double g
             const int k = std::min(2, static_cast<int>(3.0 * (ground - z) / embedded));
             shaft[k] += p.pore_pressure[i], ++shaft_n[k];
         }
-        if (open && r < t.inner - 0.25 * h) top = std::max(top, z);
+        if (open) plug.add(r, z);
     }
-    AtPile out{n ? sum / n : 0.0, open ? top - t.elevation : 0.0};
+    AtPile out{n ? sum / n : 0.0, open ? plug.mean_level(t.elevation) - t.elevation : 0.0};
     for (int k = 0; k < 3; ++k) out.shaft_pore_pressure[k] = shaft_n[k] ? shaft[k] / shaft_n[k] : 0.0;
     return out;
 }
