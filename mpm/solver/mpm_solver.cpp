@@ -464,7 +464,8 @@ void MpmSolver<D>::update_grid(double dt) {
                 const double v0 = g.momentum[k] / mass;
                 // The far field's push: the force it held at rest plus its spring.
                 const double spring = held_share > 0.0 ? cond->spring_force(d) : 0.0;
-                const double held = held_share > 0.0 ? cond->held_force[d] + spring : 0.0;
+                const double held_at_rest = held_share > 0.0 ? cond->held_force[d] : 0.0;
+                const double held = held_at_rest + spring;
                 double force = g.force[k] + held;
                 const bool absorbing_held = cond && static_boundaries_ && cond->absorbing[d];
                 if (cond && (cond->fixed[d] || absorbing_held)) {
@@ -487,7 +488,7 @@ void MpmSolver<D>::update_grid(double dt) {
                 double v1 = ((mass / dt - 0.5 * c) * v0 + force) / (mass / dt + 0.5 * c);
                 if (c > 0.0) absorbed_ += 0.25 * c * (v0 + v1) * (v0 + v1) * dt;
                 if (held_share > 0.0) absorbed_ += cond->move_far_field(d, spring, v0, v1, dt);
-                external_work_ += 0.5 * (external_[k] + held - spring) * (v0 + v1) * dt;
+                external_work_ += 0.5 * (external_[k] + held_at_rest) * (v0 + v1) * dt;
                 g.velocity[k] = v1;
                 g.acceleration[k] = (v1 - v0) / dt;
             }
@@ -734,13 +735,16 @@ void MpmSolver<D>::update_stress(double dt) {
         const auto& pts = points_of_material_[mat];
         const int count = static_cast<int>(pts.size());
         m_.materials[mat]->set_time(time_, dt);
-        const int threads = count > kParallelPoints ? omp_get_max_threads() : 1;
-#pragma omp parallel for schedule(static) if (threads > 1)
-        for (int t = 0; t < threads; ++t) {
-            const int lo = count * t / threads, hi = count * (t + 1) / threads;
-            if (hi > lo)
-                m_.materials[mat]->update(hi - lo, pts.data() + lo, p.dstrain.data(), p.stress.data(), p.state.data(),
-                                          p.state_stride);
+        // Points cost unevenly (a yielding HS-small point substeps, an elastic one does not,
+        // and the yielding ones cluster by the pile), so threads take small chunks in turn
+        // rather than one even slice each; each point's update is its own, the bits the same.
+        constexpr int kChunk = 64;
+        const int chunks = (count + kChunk - 1) / kChunk;
+#pragma omp parallel for schedule(dynamic, 1) if (count > kParallelPoints)
+        for (int c = 0; c < chunks; ++c) {
+            const int lo = c * kChunk, hi = std::min(count, lo + kChunk);
+            m_.materials[mat]->update(hi - lo, pts.data() + lo, p.dstrain.data(), p.stress.data(), p.state.data(),
+                                      p.state_stride);
         }
     }
 }
