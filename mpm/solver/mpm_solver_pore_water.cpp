@@ -134,7 +134,8 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
                 const double v0 = g.momentum[ks] / Ms, w0 = has_water ? g.momentum[kw] / Mnw : 0.0;
                 // The far field's push: the force it held at rest plus its spring.
                 const double spring = held_share > 0.0 ? cond->spring_force(d) : 0.0;
-                const double held = held_share > 0.0 ? cond->held_force[d] + spring : 0.0;
+                const double held_at_rest = held_share > 0.0 ? cond->held_force[d] : 0.0;
+                const double held = held_at_rest + spring;
                 double Fs = g.force[ks] + held, Fw = has_water ? g.force[kw] : 0.0;
                 const double cs = cond ? cond->dashpot[d] : 0.0, cw = cond && has_water ? cond->water_dashpot[d] : 0.0;
                 const bool absorbing_held = cond && static_boundaries_ && cond->absorbing[d];
@@ -180,7 +181,7 @@ void MpmSolver<D>::update_grid_coupled(double dt) {
                     absorbed_ += (cs * vm * vm + cw * pm * pm) * dt;
                 }
                 if (held_share > 0.0 && !fixed_s) absorbed_ += cond->move_far_field(d, spring, v0, v1, dt);
-                external_work_ += 0.5 * (external_[ks] + held - spring) * (v0 + v1) * dt;
+                external_work_ += 0.5 * (external_[ks] + held_at_rest) * (v0 + v1) * dt;
                 if (has_water) external_work_ += 0.5 * external_[kw] * porosity * (w0 + w1 - v0 - v1) * dt;
                 g.velocity[ks] = v1;
                 g.acceleration[ks] = a / dt;
