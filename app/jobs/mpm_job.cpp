@@ -264,10 +264,21 @@ std::vector<VerificationCheck> convergence_checks(const io::MpmCase& c,
     return out;
 }
 
+// What a checkpoint must match to be resumed: the case file's name (not its path as typed,
+// so a run resumes from another folder, or with the path spelt otherwise), its dimension,
+// cells, number of stages and pile.
 std::string fingerprint(const io::MpmCase& c) {
-    return c.file + "|" + std::to_string(c.dimension) + "|" + std::to_string(c.cells[0]) + "x" +
+    return fs::path(c.file).filename().string() + "|" + std::to_string(c.dimension) + "|" + std::to_string(c.cells[0]) + "x" +
            std::to_string(c.cells[1]) + "x" + std::to_string(c.cells[2]) + "|" + std::to_string(c.stages.size()) +
            (c.pile.present ? "|pile" : "");
+}
+
+// Checkpoints written before 2026-12-07 hold the case's path as it was typed: compared by
+// its file name too, so the drives running then resume.
+bool same_case(const std::string& stored, const std::string& now) {
+    const auto bar = stored.find('|');
+    if (bar == std::string::npos) return stored == now;
+    return fs::path(stored.substr(0, bar)).filename().string() + stored.substr(bar) == now;
 }
 
 template <int D>
@@ -287,8 +298,10 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             std::fprintf(stderr, "pilempm: resuming from the checkpoint a killed run left in %s\n",
                          staged.adopted_from().c_str());
         restored = io::read_run_checkpoint<D>(file, m.particles);
-        if (restored.case_fingerprint != fingerprint(c))
-            throw std::runtime_error("the checkpoint in " + staged.incomplete_path().string() + " belongs to another case");
+        if (!same_case(restored.case_fingerprint, fingerprint(c)))
+            throw std::runtime_error("the checkpoint in " + staged.path().string() + " belongs to another case (" +
+                                     restored.case_fingerprint.substr(0, restored.case_fingerprint.find('|')) +
+                                     "), not to " + c.file);
         if (!quiet)
             std::fprintf(stderr, "resuming at stage %d, t = %g s, step %ld\n", restored.driver.stage + 1,
                          restored.solver.time, restored.solver.steps);

@@ -369,6 +369,26 @@ TEST(MpmResume, AGradedGridRunStoppedMidwayResumedWritesWhatAnUninterruptedOneWr
     fs::remove_all(dir);
 }
 
+// A run resumes whatever the spelling of its case's path (stopped with it absolute, resumed
+// as ./wave.yaml from its folder); the checkpoint refuses another case file, naming both.
+TEST(MpmResume, ARunResumesWithItsCasesPathSpeltOtherwiseAndRefusesAnotherCase) {
+    const fs::path dir = fresh_dir("spelling");
+    const std::string file = wave_case(dir, false);
+    const std::string exe = PILEMPM_EXECUTABLE, here = "cd " + dir.string() + " && ";
+    ASSERT_EQ(run(here + exe + " run ./wave.yaml --out whole --quiet"), 0);
+    ASSERT_EQ(run("PILEMPM_INTERRUPT_AFTER_STEPS=100 " + exe + " run " + file + " --out " + (dir / "split").string() +
+                  " --quiet 2>/dev/null"),
+              130);
+    fs::copy_file(file, dir / "other.yaml");
+    EXPECT_EQ(run(here + exe + " run other.yaml --out split --quiet --resume 2>refused.txt"), 1);
+    EXPECT_NE(read_file(dir / "refused.txt").find("belongs to another case (wave.yaml), not to other.yaml"),
+              std::string::npos)
+        << read_file(dir / "refused.txt");
+    ASSERT_EQ(run(here + exe + " run ./wave.yaml --out split --quiet --resume"), 0);
+    expect_same_outputs(dir / "whole", dir / "split");
+    fs::remove_all(dir);
+}
+
 TEST(MpmResume, NothingToResumeIsAClearError) {
     const fs::path dir = fresh_dir("none");
     const std::string exe = PILEMPM_EXECUTABLE;
