@@ -3,6 +3,7 @@
 // pore water's mpm_solver_pore_water.cpp): not for use outside the solver.
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -70,12 +71,22 @@ void MpmSolver<D>::scatter(int values, Accumulate&& accumulate, std::vector<doub
         out.swap(thread_buffer_[0]);  // one chunk over every block: its sums are the result
         return;
     }
-    out.assign(size, 0.0);
-    for (int chunk = 0; chunk < chunks; ++chunk) {
-        const auto& buf = thread_buffer_[chunk];
-        if (buf.empty()) continue;
-        double* into = out.data() + per_slot * chunk_blocks_[2 * chunk];
-        for (std::size_t k = 0; k < buf.size(); ++k) into[k] += buf[k];
+    // The sum split by entries over the same threads: each entry still adds the chunks'
+    // buffers in chunk order, so the result is the serial sum's to the bit.
+    out.resize(size);
+#pragma omp parallel num_threads(chunks)
+    {
+        const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
+        const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+        const std::size_t lo = size * t / threads, hi = size * (t + 1) / threads;
+        std::fill(out.begin() + lo, out.begin() + hi, 0.0);
+        for (int chunk = 0; chunk < chunks; ++chunk) {
+            const auto& buf = thread_buffer_[chunk];
+            if (buf.empty()) continue;
+            const std::size_t from = per_slot * chunk_blocks_[2 * chunk];
+            const std::size_t a = std::max(lo, from), b = std::min(hi, from + buf.size());
+            for (std::size_t k = a; k < b; ++k) out[k] += buf[k - from];
+        }
     }
 }
 
