@@ -80,13 +80,14 @@ double ground_elevation(const io::MpmCase& c, const io::MpmRun<D>& run) {
 // the history; false when there are none. Written at the end, and at every checkpoint of a
 // run in progress (its finished blows).
 template <int D>
-bool write_drive_tables(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history, const fs::path& dir,
-                        std::size_t stages_done, Table* blow_table = nullptr, Table* count_table = nullptr) {
+bool write_drive_tables(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history, const Table& extremes,
+                        const fs::path& dir, std::size_t stages_done, Table* blow_table = nullptr,
+                        Table* count_table = nullptr) {
     std::vector<coupling::BlowStage> blows;
     for (std::size_t k = 0; k < std::min(stages_done, c.stages.size()); ++k)
         if (c.stages[k].blow) blows.push_back({static_cast<int>(k) + 1, c.stages[k].blow_number});
     if (blows.empty()) return false;
-    const Table table = coupling::blow_table(history, blows, ground_elevation(c, run));
+    const Table table = coupling::blow_table(history, extremes, blows, ground_elevation(c, run));
     const Table count = coupling::blow_count_table(table);
     io::write_csv(dir / "blows.csv", table);
     io::write_csv(dir / "blow_count.csv", count);
@@ -98,11 +99,11 @@ bool write_drive_tables(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
 // A drive's record (blows.csv, blow_count.csv, blow_wall_times.csv, and results.h5 with the
 // pile's mesh and final state): nothing when the case drives no blows.
 template <int D>
-void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history,
+void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Table& history, const Table& extremes,
                         const io::MpmRunOutput<D>& output, const coupling::CoupledPile& coupled,
                         const fs::path& dir) {
     Table table, count;
-    if (!write_drive_tables(c, run, history, dir, c.stages.size(), &table, &count)) return;
+    if (!write_drive_tables(c, run, history, extremes, dir, c.stages.size(), &table, &count)) return;
     const double ground = ground_elevation(c, run);
     // Wall time per blow and pause of this invocation (not in blows.csv: a resumed run's
     // tables are the uninterrupted one's to the byte).
@@ -114,7 +115,7 @@ void write_drive_record(const io::MpmCase& c, const io::MpmRun<D>& run, const Ta
     io::write_csv(dir / "blow_wall_times.csv", walls);
     std::vector<double> stress;
     coupled.pile().axial_stress(stress);
-    io::write_results_h5(dir / "results.h5", {table, count, history}, placed_pile_mesh(run), coupled.pile().displacement(),
+    io::write_results_h5(dir / "results.h5", {table, count, history, extremes}, placed_pile_mesh(run), coupled.pile().displacement(),
                          coupled.pile().velocity(), stress, {{"ground_elevation_m", ground}}, {{"title", c.title}});
 }
 
@@ -339,7 +340,8 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             // A long drive can be followed: its tables so far beside each checkpoint.
             output.also_at_checkpoints(
                 [&c, &run, &staged, &pile_vtk](const coupling::DriverState& state, const Table& history) {
-                    write_drive_tables(c, run, history, staged.path(), static_cast<std::size_t>(state.stage));
+                    write_drive_tables(c, run, history, state.extremes, staged.path(),
+                                       static_cast<std::size_t>(state.stage));
                     pile_vtk->finish();
                 });
         }
@@ -367,7 +369,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
     if constexpr (D == 2)
         if (coupled) {
             for (const auto& t : io::pile_traction_profiles(*coupled)) io::write_csv(staged.path() / (t.name + ".csv"), t);
-            write_drive_record(c, run, history, output, *coupled, staged.path());
+            write_drive_record(c, run, history, driver.extremes(), output, *coupled, staged.path());
         }
     if constexpr (D == 2) {
         // A collapse's final deposit, one row per grid column, for comparison with profiles.

@@ -13,7 +13,8 @@ const std::vector<double>& col(const Table& t, const std::string& name) { return
 
 }  // namespace
 
-Table blow_table(const Table& history, const std::vector<BlowStage>& blows, double ground_elevation) {
+Table blow_table(const Table& history, const Table& extremes, const std::vector<BlowStage>& blows,
+                 double ground_elevation) {
     Table out("blows", {"blow", "stage", "start_time_s", "duration_s", "toe_depth_before_m", "toe_depth_m", "set_m",
                         "max_head_displacement_m", "max_head_force_N", "max_head_velocity_m_s",
                         "enthru_J", "max_compression_Pa", "max_tension_Pa", "max_shaft_resistance_N",
@@ -28,15 +29,6 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
     const auto& time = col(history, "time_s");
     const auto& toe = col(history, "pile_toe_elevation_m");
     const auto& head = col(history, "pile_head_settlement_m");
-    const auto& force = col(history, "pile_head_force_N");
-    const auto& velocity = col(history, "pile_head_velocity_m_s");
-    const auto& enthru = col(history, "enthru_J");
-    const auto& compression = col(history, "pile_max_compression_Pa");
-    const auto& tension = col(history, "pile_max_tension_Pa");
-    const auto& outer = col(history, "outer_shaft_resistance_N");
-    const auto& inner = col(history, "inner_shaft_resistance_N");
-    const auto& base = col(history, "base_resistance_N");
-    const auto& pore = col(history, "toe_pore_pressure_Pa");
     const auto& plug = col(history, "plug_length_m");
     const auto& absorbed = col(history, "absorbed_energy_J");
     const auto& pile_energy = col(history, "pile_energy_J");
@@ -44,9 +36,6 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
     const auto& mass = col(history, "soil_mass_kg");
     const auto& volume = col(history, "soil_volume_m3");
     const auto& water = col(history, "pore_water_volume_m3");
-    const std::vector<double>* shaft[3] = {&col(history, "shaft_pore_pressure_upper_Pa"),
-                                           &col(history, "shaft_pore_pressure_middle_Pa"),
-                                           &col(history, "shaft_pore_pressure_lower_Pa")};
     // Each stage's first and last row, in one pass (a drive of hundreds of blows has
     // hundreds of thousands of rows, and the table is rebuilt at every checkpoint).
     std::vector<std::size_t> first_row, last_row;
@@ -56,47 +45,46 @@ Table blow_table(const Table& history, const std::vector<BlowStage>& blows, doub
         if (first_row[st] == stage.size()) first_row[st] = i;
         last_row[st] = i;
     }
+    // Each stage's row of extremes.
+    const auto& extremes_stage = col(extremes, "stage");
+    std::vector<std::size_t> peak_row(first_row.size(), extremes_stage.size());
+    for (std::size_t r = 0; r < extremes_stage.size(); ++r) {
+        const auto st = static_cast<std::size_t>(std::max(0.0, extremes_stage[r]));
+        if (st < peak_row.size()) peak_row[st] = r;
+    }
     double last_blow_toe = 0.0;  // where the last blow left the toe
     bool after_a_blow = false;
     for (const BlowStage& b : blows) {
         const auto st = static_cast<std::size_t>(b.stage);
         if (st >= first_row.size() || first_row[st] == stage.size()) continue;  // not run (the drive ended before it)
+        if (peak_row[st] == extremes_stage.size()) continue;  // under way (a checkpoint's tables: its finished blows)
         const std::size_t first = first_row[st], last = last_row[st];
         const std::size_t before = first > 0 ? first - 1 : first;
+        auto peak = [&](const char* which, const std::string& column) { return col(extremes, which + column)[peak_row[st]]; };
         // The set counts from where the last blow left the toe, as a set is read in the
         // field: the pause's settlement goes to the blow after it, and the sets add up to
         // the drive's penetration.
         const double toe_before = after_a_blow ? last_blow_toe : toe[before];
         last_blow_toe = toe[last];
         after_a_blow = true;
-        double dmx = 0.0, fmx = 0.0, vmx = 0.0, emx = 0.0, cmx = 0.0, tmx = 0.0, smx = 0.0, bmx = 0.0;
-        double pmax = -1e300, pmin = 1e300, shaft_max[3] = {-1e300, -1e300, -1e300}, shaft_min[3] = {1e300, 1e300, 1e300};
-        for (std::size_t i = first; i <= last; ++i) {
-            dmx = std::max(dmx, head[i] - head[before]);
-            fmx = std::max(fmx, force[i]);
-            vmx = std::max(vmx, velocity[i]);
-            emx = std::max(emx, enthru[i]);
-            cmx = std::max(cmx, compression[i]);
-            tmx = std::max(tmx, tension[i]);
-            smx = std::max(smx, outer[i] + inner[i]);
-            bmx = std::max(bmx, base[i]);
-            pmax = std::max(pmax, pore[i]);
-            pmin = std::min(pmin, pore[i]);
-            for (int k = 0; k < 3; ++k) {
-                shaft_max[k] = std::max(shaft_max[k], (*shaft[k])[i]);
-                shaft_min[k] = std::min(shaft_min[k], (*shaft[k])[i]);
-            }
-        }
         // The drift since the run began, formed here in double precision: the CSV's ten
         // digits of the volumes would hide changes below 1e-10 of them.
         const double mass_change = mass[last] / mass.front() - 1.0;
         const double grain_change = (volume[last] - water[last]) / (volume.front() - water.front()) - 1.0;
+        const char* shaft[3] = {"shaft_pore_pressure_upper_Pa", "shaft_pore_pressure_middle_Pa",
+                                "shaft_pore_pressure_lower_Pa"};
         out.add_row({static_cast<double>(b.blow), static_cast<double>(b.stage), time[before],
                      time[last] - time[before], ground_elevation - toe_before, ground_elevation - toe[last],
-                     toe_before - toe[last], dmx, fmx, vmx, emx, cmx, tmx, smx, bmx, pmax, pmin, plug[last],
+                     toe_before - toe[last], std::max(0.0, peak("max_", "pile_head_settlement_m") - head[before]),
+                     std::max(0.0, peak("max_", "pile_head_force_N")),
+                     std::max(0.0, peak("max_", "pile_head_velocity_m_s")), std::max(0.0, peak("max_", "enthru_J")),
+                     std::max(0.0, peak("max_", "pile_max_compression_Pa")),
+                     std::max(0.0, peak("max_", "pile_max_tension_Pa")),
+                     std::max(0.0, peak("max_", "shaft_resistance_N")), std::max(0.0, peak("max_", "base_resistance_N")),
+                     peak("max_", "toe_pore_pressure_Pa"), peak("min_", "toe_pore_pressure_Pa"), plug[last],
                      absorbed[last] - absorbed[before], pile_energy[last], kinetic[last], mass[last], volume[last],
-                     water[last], mass_change, grain_change, shaft_max[0], shaft_min[0], shaft_max[1], shaft_min[1], shaft_max[2],
-                     shaft_min[2]});
+                     water[last], mass_change, grain_change, peak("max_", shaft[0]), peak("min_", shaft[0]),
+                     peak("max_", shaft[1]), peak("min_", shaft[1]), peak("max_", shaft[2]), peak("min_", shaft[2])});
     }
     return out;
 }

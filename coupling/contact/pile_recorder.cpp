@@ -1,6 +1,7 @@
 #include "coupling/contact/pile_recorder.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "coupling/contact/plug_surface.hpp"
 
@@ -60,12 +61,23 @@ AtPile at_pile(const mpm::MpmModel<2>& m, const ToeExtent& t, double h, double g
 
 void PileRecorder::add_columns(std::vector<std::string>& columns) const {
     for (const char* c : {"pile_head_settlement_m", "pile_head_force_N", "outer_shaft_resistance_N",
-                          "inner_shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
+                          "inner_shaft_resistance_N", "shaft_resistance_N", "base_resistance_N", "contact_points", "contact_points_inside",
                           "max_penetration_over_cell", "pile_toe_elevation_m", "pile_head_velocity_m_s", "enthru_J",
                           "pile_max_compression_Pa", "pile_max_tension_Pa", "toe_pore_pressure_Pa", "plug_length_m", "pile_energy_J",
                           "pile_weight_work_J", "shaft_pore_pressure_upper_Pa", "shaft_pore_pressure_middle_Pa",
                           "shaft_pore_pressure_lower_Pa"})
         columns.push_back(c);
+}
+
+void PileRecorder::complete(Table& history) const {
+    auto index = [&](const char* name) {
+        return static_cast<std::size_t>(std::find(history.columns.begin(), history.columns.end(), name) - history.columns.begin());
+    };
+    const std::size_t shaft = index("shaft_resistance_N"), outer = index("outer_shaft_resistance_N"),
+                      inner = index("inner_shaft_resistance_N");
+    if (std::max({shaft, outer, inner}) >= history.columns.size()) return;
+    for (std::size_t i = 0; i < history.rows(); ++i)
+        if (std::isnan(history.data[shaft][i])) history.data[shaft][i] = history.data[outer][i] + history.data[inner][i];
 }
 
 void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, std::vector<double>& row) const {
@@ -76,6 +88,7 @@ void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, s
     row.push_back(pile_.head_force());
     row.push_back(up(SurfaceSide::Outer));
     row.push_back(up(SurfaceSide::Inner));
+    row.push_back(up(SurfaceSide::Outer) + up(SurfaceSide::Inner));  // a blow's peak shaft resistance is this sum's
     row.push_back(up(SurfaceSide::Toe));
     row.push_back(static_cast<double>(t.points_in_contact));
     row.push_back(static_cast<double>(t.points_inside));

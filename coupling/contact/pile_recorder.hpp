@@ -21,6 +21,8 @@ public:
     PileRecorder(const CoupledPile& pile, double ground_elevation) : pile_(pile), ground_(ground_elevation) {}
     void add_columns(std::vector<std::string>& columns) const override;
     void sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>& solver, std::vector<double>& row) const override;
+    // shaft_resistance_N (recorded since 2026-12-07) from the outer and inner shaft's.
+    void complete(Table& history) const override;
 
 private:
     const CoupledPile& pile_;

@@ -42,6 +42,10 @@ struct StageSpec {
     // whose wave has passed settles to rest on the soil instead of rocking on it for
     // seconds, so its set is read at rest and the pause starts from equilibrium.
     double settle_damping = 0.0;
+    // A dynamic stage stores every record_every-th step's row in the history, every step's
+    // while in_stage < min_duration (a blow's wave: the head's record) and its last; the
+    // peaks are kept over every step all the same (DriverState::extremes).
+    int record_every = 1;
     // Impact driving: the blows and pauses of one drive share `drive` (>= 0; -1: none). After
     // a blow the driver ends the drive (goes on after its last stage) when the body's toe is
     // at end_toe_elevation or lower, or when refusal_blows blows in a row each set it less

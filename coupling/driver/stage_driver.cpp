@@ -21,6 +21,7 @@ StageDriver<D>::StageDriver(mpm::MpmModel<D>& model, std::vector<StageSpec> stag
       flip_dynamic_(model.flip),
       apic_dynamic_(model.apic) {
     state_.next_snapshot = settings_.snapshot_interval;
+    state_.extremes = empty_extremes(history_.columns);
 }
 
 template <int D>
@@ -28,31 +29,64 @@ void StageDriver<D>::add_recorder(std::unique_ptr<Recorder<D>> recorder) {
     if (history_.rows() > 0) throw std::logic_error("recorders are added before the run");
     recorder->add_columns(history_.columns);
     history_.data.resize(history_.columns.size());
+    state_.extremes = empty_extremes(history_.columns);
     recorders_.push_back(std::move(recorder));
 }
 
+namespace {
+
+// A row of values per column `from` in the order of `to` (NaN where `from` has none).
+std::vector<double> by_column(const std::vector<double>& values, const std::vector<std::string>& from,
+                              const std::vector<std::string>& to) {
+    if (values.empty() || from == to) return values;
+    std::vector<double> out(to.size(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t c = 0; c < to.size(); ++c) {
+        const auto it = std::find(from.begin(), from.end(), to[c]);
+        if (it != from.end()) out[c] = values[static_cast<std::size_t>(it - from.begin())];
+    }
+    return out;
+}
+
+// A table's columns in the order (and set) of `columns`: NaN for those it lacks; a column
+// it has that `columns` has not is an error (a run must not drop what it recorded).
+Table with_columns(const Table& t, const std::vector<std::string>& columns) {
+    if (t.columns == columns) return t;
+    Table merged(t.name, columns);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        const auto it = std::find(t.columns.begin(), t.columns.end(), columns[c]);
+        merged.data[c] = it != t.columns.end() ? t.data[static_cast<std::size_t>(it - t.columns.begin())]
+                                              : std::vector<double>(t.rows(), std::numeric_limits<double>::quiet_NaN());
+    }
+    for (const auto& name : t.columns)
+        if (std::find(columns.begin(), columns.end(), name) == columns.end())
+            throw std::runtime_error("the checkpoint's " + t.name + " records " + name + ", which this run does not");
+    return merged;
+}
+
+}  // namespace
+
 template <int D>
 void StageDriver<D>::resume(const DriverState& state, const mpm::SolverState& solver, Table history) {
-    if (history.columns != history_.columns) {
-        // A checkpoint of an earlier build that recorded fewer columns: its rows go on with
-        // the new columns empty (NaN) up to the resume, so a long campaign survives an
-        // upgrade. A column it has that this run does not record is an error.
-        const std::size_t rows = history.rows();
-        Table merged(history_.name, history_.columns);
-        for (std::size_t c = 0; c < merged.columns.size(); ++c) {
-            const auto it = std::find(history.columns.begin(), history.columns.end(), merged.columns[c]);
-            merged.data[c] = it != history.columns.end()
-                                 ? history.data[static_cast<std::size_t>(it - history.columns.begin())]
-                                 : std::vector<double>(rows, std::numeric_limits<double>::quiet_NaN());
-        }
-        for (const auto& name : history.columns)
-            if (std::find(merged.columns.begin(), merged.columns.end(), name) == merged.columns.end())
-                throw std::runtime_error("the checkpoint's history records " + name + ", which this run does not");
-        history = std::move(merged);
-    }
+    // A checkpoint of an earlier build that recorded fewer columns: its rows go on with the
+    // new columns empty (NaN) up to the resume, or as the recorders derive them, so a long
+    // campaign survives an upgrade.
+    const std::vector<std::string> recorded = history.columns;
+    history_ = with_columns(history, history_.columns);
+    for (const auto& r : recorders_) r->complete(history_);
     state_ = state;
+    if (state.extremes.columns.empty()) {
+        // An earlier build's checkpoint: it stored every row it sampled.
+        state_.extremes = extremes_of_history(history_, state.stage + 1, &state_.stage_max, &state_.stage_min);
+        state_.last_row.clear();
+        if (state.stage_begun && history_.rows() > 0)
+            for (const auto& column : history_.data) state_.last_row.push_back(column.back());
+    } else {
+        state_.extremes = with_columns(state_.extremes, empty_extremes(history_.columns).columns);
+        state_.stage_max = by_column(state_.stage_max, recorded, history_.columns);
+        state_.stage_min = by_column(state_.stage_min, recorded, history_.columns);
+        state_.last_row = by_column(state_.last_row, recorded, history_.columns);
+    }
     solver_.restore(solver);
-    history_ = std::move(history);
 }
 
 template <int D>
@@ -69,10 +103,19 @@ void StageDriver<D>::apply_loads(bool quasi_static, double time_in_stage) {
 }
 
 template <int D>
-void StageDriver<D>::record() {
-    std::vector<double> row = {solver_.time(), static_cast<double>(solver_.steps()),
-                               static_cast<double>(state_.stage + 1)};
+void StageDriver<D>::record(bool store) {
+    std::vector<double>& row = state_.last_row;  // kept: a decimated stage stores its last at its end
+    row.assign({solver_.time(), static_cast<double>(solver_.steps()), static_cast<double>(state_.stage + 1)});
     for (const auto& r : recorders_) r->sample(m_, solver_, row);
+    fold_extremes(row, state_.stage_max, state_.stage_min);
+    if (store)
+        for (std::size_t k = 0; k < row.size(); ++k) history_.data[k].push_back(row[k]);
+}
+
+template <int D>
+void StageDriver<D>::store_last_row() {
+    const auto& row = state_.last_row;
+    if (row.empty() || (history_.rows() > 0 && history_.data[1].back() == row[1])) return;  // [1]: the step
     for (std::size_t k = 0; k < row.size(); ++k) history_.data[k].push_back(row[k]);
 }
 
@@ -151,8 +194,9 @@ bool StageDriver<D>::run_quasi_static(const StageSpec& st, const StopRequest* st
 // After a step in real time (dynamic, consolidation): the history row, a snapshot when its
 // clock says, the periodic checkpoint and the stop request. False when stopped.
 template <int D>
-bool StageDriver<D>::after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop) {
-    record();
+bool StageDriver<D>::after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop,
+                                          bool store) {
+    record(store);
     if (settings_.snapshot_interval > 0.0 && solver_.time() >= state_.next_snapshot - 1e-12) {
         observer_->snapshot(solver_.time(), m_);
         state_.next_snapshot += settings_.snapshot_interval;
@@ -188,8 +232,10 @@ bool StageDriver<D>::run_dynamic(const StageSpec& st, const StopRequest* stop) {
         apply_loads(false, in_stage);
         step(std::min(step_size(), t_end - solver_.time()), false);
         ++state_.stage_steps;
-        if (!after_real_time_step(st, report, stop)) return false;
+        const bool store = st.record_every <= 1 || in_stage < st.min_duration || state_.stage_steps % st.record_every == 0;
+        if (!after_real_time_step(st, report, stop, store)) return false;
     }
+    store_last_row();  // the stage's end state is in the history (the next stage's "before")
     report.steps = state_.stage_steps;
     report.unbalanced_ratio = solver_.unbalanced_force_ratio();
     if (st.blow && body_) report.set = blow_set();
@@ -242,6 +288,8 @@ void StageDriver<D>::begin_stage(const StageSpec& st) {
     state_.stage_start_time = solver_.time();
     state_.stage_steps = 0;
     state_.rest_since = -1.0;
+    state_.stage_max.clear();
+    state_.stage_min.clear();
     if (st.blow) {
         state_.blow_start_time = solver_.time();
         state_.blow_start_toe = body_ ? body_->toe_elevation() : 0.0;
@@ -297,6 +345,9 @@ typename StageDriver<D>::Outcome StageDriver<D>::run(const StopRequest* stop) {
                               : st.quasi_static  ? run_quasi_static(st, stop)
                                                  : run_dynamic(st, stop);
         if (!finished) return Outcome::Stopped;
+        add_extremes_row(state_.extremes, state_.stage + 1, state_.stage_max, state_.stage_min);
+        state_.stage_max.clear();
+        state_.stage_min.clear();
         if (st.snapshot_at_end) observer_->snapshot(solver_.time(), m_);
         state_.stage = end_stage(st);
         // The checkpoint at a stage's end names the next stage, not yet begun.

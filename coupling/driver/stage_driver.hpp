@@ -13,6 +13,7 @@
 
 #include "core/table.hpp"
 #include "coupling/driver/coupled_body.hpp"
+#include "coupling/driver/history_extremes.hpp"
 #include "coupling/driver/recorders.hpp"
 #include "coupling/driver/stage.hpp"
 #include "coupling/driver/stop_request.hpp"
@@ -38,6 +39,11 @@ struct DriverState {
     int low_set_blows = 0;
     // s: since when the body has been slower than the stage's rest_speed (< 0: moving).
     double rest_since = -1.0;
+    // Each finished stage's extremes of the history (history_extremes.hpp), the running ones
+    // of the stage under way, and the last row sampled (a stage that stores every n-th row
+    // stores its last one at its end).
+    Table extremes;
+    std::vector<double> stage_max, stage_min, last_row;
 };
 
 struct DriverSettings {
@@ -89,13 +95,17 @@ public:
     void add_recorder(std::unique_ptr<Recorder<D>> recorder);
 
     // A run resumed from a checkpoint: the particles are already in the model; this brings
-    // back the driver's state, the solver's clock and energy ledger, and the history.
+    // back the driver's state, the solver's clock and energy ledger, and the history. A
+    // checkpoint without the extremes (an earlier build's, every row stored) has them
+    // rebuilt from its history.
     void resume(const DriverState& state, const mpm::SolverState& solver, Table history);
 
     // Runs the stages left; Stopped when `stop` asked for it (a checkpoint has been taken).
     Outcome run(const StopRequest* stop = nullptr);
 
     const Table& history() const { return history_; }
+    // Each finished stage's extremes of the history (history_extremes.hpp).
+    const Table& extremes() const { return state_.extremes; }
     const DriverState& state() const { return state_; }
     const mpm::MpmSolver<D>& solver() const { return solver_; }
     const std::vector<StageSpec>& stages() const { return stages_; }
@@ -104,7 +114,10 @@ public:
 
 private:
     void apply_loads(bool quasi_static, double time_in_stage);
-    void record();
+    // Samples the recorders into a history row (stored when `store`) and the stage's extremes.
+    void record(bool store = true);
+    // Stores the last row sampled unless the history already ends with it.
+    void store_last_row();
     void checkpoint();
     bool periodic_checkpoint_and_stop(const StopRequest* stop);
     bool run_quasi_static(const StageSpec& st, const StopRequest* stop);
@@ -113,7 +126,7 @@ private:
     void begin_stage(const StageSpec& st);
     int end_stage(const StageSpec& st);
     double blow_set() const;  // m, the blow just run (body_ set)
-    bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop);
+    bool after_real_time_step(const StageSpec& st, StageReport& report, const StopRequest* stop, bool store = true);
     double step_size() const;
     // The soil's unbalanced force ratio, or the body's where larger (a quasi-static stage's end).
     double unbalanced_force_ratio() const {

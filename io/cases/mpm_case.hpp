@@ -98,6 +98,7 @@ struct MpmStageInput {
     double min_duration = -1.0;     // s (< 0: the pulse and four of the pile's wave transits)
     double rest_span = -1.0;        // s below rest_speed that counts as rest (< 0: min_duration)
     double settle_damping = 0.0;    // a blow's local damping after min_duration (0: none)
+    int history_every = 1;          // a blow's history row every n-th step after min_duration
     double end_toe_elevation = -1e300;
     double refusal_set = 0.0;       // m
     int refusal_blows = 0;

@@ -173,6 +173,9 @@ void read_drive(MapReader m, const MpmCase& c, int drive, std::vector<MpmStageIn
     blow.settle_damping = m.number_or("settle_damping", 0.0, {"a damping coefficient from 0 to 1",
                                                                [](double x) { return x >= 0.0 && x < 1.0; }});
     blow.gravity_factor = m.number_or("gravity_factor", 1.0, positive("gravity over the case's (n for n g)"));
+    // Rows of a long drive's history: every step while the blow's wave travels, then every
+    // n-th (the blow's peaks are kept over every step).
+    blow.history_every = m.integer_or("history_every", 1, 1);
     if (m.has("target_toe_elevation"))
         blow.end_toe_elevation = m.number("target_toe_elevation", {"an elevation in m", [](double) { return true; }});
     if (auto r = m.optional_map("refusal")) {

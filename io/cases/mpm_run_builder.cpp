@@ -382,6 +382,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
         // monopile rocking at 4 Hz).
         s.rest_span = !st.blow ? 0.0 : st.rest_span >= 0.0 ? st.rest_span : s.min_duration;
         s.settle_damping = st.settle_damping;
+        s.record_every = st.history_every;
         s.end_toe_elevation = st.end_toe_elevation;
         s.refusal_set = st.refusal_set;
         s.refusal_blows = st.refusal_blows;

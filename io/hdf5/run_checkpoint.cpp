@@ -33,8 +33,12 @@ void write_run_checkpoint(const std::filesystem::path& file, const mpm::Particle
     extras.arrays.emplace_back("boundary_held_force", run.solver.held_force);
     extras.arrays.emplace_back("boundary_displacement", run.solver.boundary_displacement);
     extras.arrays.emplace_back("history_segments", run.history_segments);
+    extras.arrays.emplace_back("driver_stage_max", s.stage_max);
+    extras.arrays.emplace_back("driver_stage_min", s.stage_min);
+    extras.arrays.emplace_back("driver_last_row", s.last_row);
     for (const auto& [name, values] : run.body) extras.arrays.emplace_back(kBodyPrefix + name, values);
     extras.tables.push_back(run.history);
+    if (!s.extremes.columns.empty()) extras.tables.push_back(s.extremes);  // a stage driver's state has them
     write_checkpoint<D>(file, p, run.solver.time, run.solver.steps, scalars, run.case_fingerprint, extras);
 }
 
@@ -70,11 +74,16 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
         if (name == "boundary_held_force") run.solver.held_force = values;
         if (name == "boundary_displacement") run.solver.boundary_displacement = values;
         if (name == "history_segments") run.history_segments = values;  // none before them: all in the table
+        if (name == "driver_stage_max") run.driver.stage_max = values;
+        if (name == "driver_stage_min") run.driver.stage_min = values;
+        if (name == "driver_last_row") run.driver.last_row = values;
         if (name.rfind(kBodyPrefix, 0) == 0) run.body.emplace_back(name.substr(kBodyPrefix.size()), values);
     }
     bool have_history = false;
-    for (const auto& t : info.extras.tables)
+    for (const auto& t : info.extras.tables) {
         if (t.name == "history") run.history = t, have_history = true;
+        if (t.name == "stage_extremes") run.driver.extremes = t;  // none before them: rebuilt from the history
+    }
     if (!have_history) throw std::runtime_error("MPM checkpoint " + file.string() + ": no history table");
     return run;
 }

@@ -280,6 +280,25 @@ TEST(MpmResume, ADriveWhoseHistoryIsSealedInSegmentsResumesExactly) {
     fs::remove_all(dir);
 }
 
+// The same drive storing every 5th step's row of its blows once their pulse has passed
+// (history_every): stopped in its second blow and resumed it writes what the uninterrupted
+// one writes; and its blows.csv, every blow's peaks included, is the full-rate drive's to the
+// byte from a history of far fewer rows.
+TEST(MpmResume, ADriveWithADecimatedHistoryResumesExactlyAndKeepsEveryBlowsPeaks) {
+    const fs::path dir = fresh_dir("drive-decimated");
+    // Its wave's window (every row) 2 ms of the 10 ms blows, in both drives.
+    const std::pair<std::string, std::string> window = {"    pause: {steps: 8}", "    pause: {steps: 8}\n    min_blow_duration: 0.002"};
+    const fs::path file = two_blow_drive(dir, "drive.yaml", {{window.first, window.second + "\n    history_every: 5"}});
+    check_resume(dir, file.string(), SIGTERM, 450);
+    const fs::path full = two_blow_drive(dir, "full.yaml", {window});
+    ASSERT_EQ(run(std::string(PILEMPM_EXECUTABLE) + " run " + full.string() + " --out " + (dir / "full").string() + " --quiet"), 0);
+    EXPECT_EQ(read_file(dir / "full" / "blows.csv"), read_file(dir / "whole" / "blows.csv"));
+    const std::string a = read_file(dir / "full" / "history.csv"), b = read_file(dir / "whole" / "history.csv");
+    const auto rows = [](const std::string& t) { return std::count(t.begin(), t.end(), '\n'); };
+    EXPECT_LT(rows(b), rows(a) / 2) << "the decimated history is not shorter";
+    fs::remove_all(dir);
+}
+
 TEST(MpmResume, SaturatedRunStoppedInItsConsolidationPauseResumedWritesWhatAnUninterruptedOneWrites) {
     const fs::path dir = fresh_dir("pause");
     const fs::path file = dir / "blow-pause-blow.yaml";

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "coupling/contact/blow_table.hpp"
+#include "coupling/driver/history_extremes.hpp"
 
 namespace pc = pilempm::coupling;
 
@@ -30,8 +31,19 @@ pilempm::Table drive_history() {
     h.add_row({1.00, 3, 4.89, 0.06, 0, 0, 0, 1e6, 0, 10, 5, 20, 0, 1.05, 75, 10, 0, 100, 10.05, 4.05, 0, 0, 0});
     h.add_row({1.01, 4, 4.85, 0.11, 2e6, 1.0, 700, 120e6, 0, 50, 20, 200, 3e4, 1.05, 95, 600, 20, 100, 10.1, 4.1, 1e4, 2e4, -3e4});
     h.add_row({1.02, 4, 4.80, 0.10, 0, 0, 800, 60e6, 10e6, 20, 10, 50, 1e4, 1.1, 115, 15, 4, 100, 10.2, 4.2, -1e4, 5e3, 4e4});
+    // The driver's step count (the extremes skip time, step and stage) and the shaft's total.
+    std::vector<double> step, shaft;
+    for (std::size_t i = 0; i < h.rows(); ++i)
+        step.push_back(10.0 * i), shaft.push_back(h.column("outer_shaft_resistance_N")[i] + h.column("inner_shaft_resistance_N")[i]);
+    h.columns.insert(h.columns.begin() + 1, "step");
+    h.data.insert(h.data.begin() + 1, step);
+    h.columns.push_back("shaft_resistance_N");
+    h.data.push_back(shaft);
     return h;
 }
+
+// Every row stored: the stages' extremes are those of their rows.
+pilempm::Table drive_extremes(const pilempm::Table& h) { return pc::extremes_of_history(h, 100); }
 
 double at(const pilempm::Table& t, const std::string& name, std::size_t row) {
     for (std::size_t k = 0; k < t.columns.size(); ++k)
@@ -43,7 +55,8 @@ double at(const pilempm::Table& t, const std::string& name, std::size_t row) {
 }  // namespace
 
 TEST(BlowTable, EachBlowsSetAndPeaksComeFromItsOwnRows) {
-    const auto blows = pc::blow_table(drive_history(), {{2, 1}, {4, 2}, {6, 3}}, 6.0);
+    const auto history = drive_history();
+    const auto blows = pc::blow_table(history, drive_extremes(history), {{2, 1}, {4, 2}, {6, 3}}, 6.0);
     ASSERT_EQ(blows.rows(), 2u);  // blow 3 never ran
     EXPECT_DOUBLE_EQ(at(blows, "start_time_s", 1), 1.0);
     EXPECT_NEAR(at(blows, "duration_s", 1), 0.02, 1e-15);
@@ -80,6 +93,40 @@ TEST(BlowTable, EachBlowsSetAndPeaksComeFromItsOwnRows) {
     EXPECT_DOUBLE_EQ(at(blows, "min_shaft_pore_pressure_middle_Pa", 1), 5e3);
     EXPECT_DOUBLE_EQ(at(blows, "max_shaft_pore_pressure_lower_Pa", 1), 4e4);
     EXPECT_DOUBLE_EQ(at(blows, "min_shaft_pore_pressure_lower_Pa", 1), -3e4);
+}
+
+// A history that stored a blow's rows sparsely: its peaks are its extremes over every step,
+// not the stored rows' (here the head force peaked at 5 MN between two stored rows), and a
+// blow not finished yet (no extremes) is left out.
+TEST(BlowTable, APeakBetweenStoredRowsComesFromTheStagesExtremes) {
+    const auto history = drive_history();
+    auto extremes = drive_extremes(history);
+    for (std::size_t r = 0; r < extremes.rows(); ++r)
+        if (extremes.data[0][r] == 2.0)
+            for (std::size_t k = 0; k < extremes.columns.size(); ++k)
+                if (extremes.columns[k] == "max_pile_head_force_N") extremes.data[k][r] = 5e6;
+    auto blows = pc::blow_table(history, extremes, {{2, 1}, {4, 2}}, 6.0);
+    ASSERT_EQ(blows.rows(), 2u);
+    EXPECT_DOUBLE_EQ(at(blows, "max_head_force_N", 0), 5e6);
+    EXPECT_DOUBLE_EQ(at(blows, "max_head_force_N", 1), 2e6);
+    blows = pc::blow_table(history, pc::extremes_of_history(history, 4), {{2, 1}, {4, 2}}, 6.0);
+    EXPECT_EQ(blows.rows(), 1u);
+}
+
+// The extremes of a history by stage; those of the stage under way apart.
+TEST(HistoryExtremes, EachStageRowHoldsItsRowsLargestAndSmallest) {
+    const auto history = drive_history();
+    std::vector<double> max, min;
+    const auto e = pc::extremes_of_history(history, 4, &max, &min);
+    ASSERT_EQ(e.rows(), 3u);
+    EXPECT_DOUBLE_EQ(at(e, "stage", 1), 2.0);
+    EXPECT_DOUBLE_EQ(at(e, "max_pile_head_velocity_m_s", 1), 2.0);
+    EXPECT_DOUBLE_EQ(at(e, "min_pile_head_velocity_m_s", 1), -0.5);
+    EXPECT_DOUBLE_EQ(at(e, "max_shaft_resistance_N", 1), 60.0);
+    EXPECT_DOUBLE_EQ(at(e, "min_plug_length_m", 2), 1.05);
+    ASSERT_EQ(max.size(), history.columns.size());  // stage 4's two rows, every column
+    EXPECT_DOUBLE_EQ(max[2], 4.0);
+    EXPECT_DOUBLE_EQ(min[history.columns.size() - 1], 30.0);
 }
 
 TEST(BlowTable, TheBlowCountCountsEachBlowWhereItEnds) {

@@ -196,14 +196,17 @@ mpm::MpmModel<2> column_with_absorbing_side() {
     return m;
 }
 
-std::vector<StageSpec> settle_then_blow() {
+std::vector<StageSpec> settle_then_blow(int record_every = 1) {
     StageSpec settle;
     settle.name = "settle";
     settle.quasi_static = true;
     settle.local_damping = 0.7;
     settle.max_steps = 400;
     settle.tolerance = 1e-12;  // runs all its steps: a stop lands inside it
-    return {settle, dynamic("blow", 0.02)};
+    StageSpec blow = dynamic("blow", 0.02);
+    blow.record_every = record_every;
+    blow.min_duration = 0.002;  // every row while the pulse acts
+    return {settle, blow};
 }
 
 void add_recorders(StageDriver<2>& d) {
@@ -211,17 +214,30 @@ void add_recorders(StageDriver<2>& d) {
     d.add_recorder(std::make_unique<ProbeRecorder<2>>(std::vector<int>{0, 5}));
 }
 
+void expect_same_table(const Table& a, const Table& b) {
+    ASSERT_EQ(a.columns, b.columns);
+    ASSERT_EQ(a.rows(), b.rows());
+    for (std::size_t r = 0; r < a.rows(); ++r)
+        for (std::size_t c = 0; c < a.columns.size(); ++c) {
+            if (std::isnan(a.data[c][r]) && std::isnan(b.data[c][r])) continue;
+            ASSERT_EQ(a.data[c][r], b.data[c][r]) << a.name << " " << a.columns[c] << " row " << r;
+        }
+}
+
 // Interrupts with a real SIGINT after `stop_after` steps, resumes in a new model from the
-// checkpoint, and compares the history and final state with an uninterrupted run.
-void check_resume(long stop_after) {
+// checkpoint, and compares the history, the stages' extremes and the final state with an
+// uninterrupted run. The blow stores every `record_every`-th row; `as_earlier_build`: the
+// checkpoint without the extremes, as a build before them wrote it (every row stored).
+void check_resume(long stop_after, int record_every = 1, bool as_earlier_build = false) {
     mpm::MpmModel<2> whole_model = column_with_absorbing_side();
-    StageDriver<2> whole(whole_model, settle_then_blow(), top_pressure(whole_model, 20e3, 0.005, {1}), {});
+    StageDriver<2> whole(whole_model, settle_then_blow(record_every), top_pressure(whole_model, 20e3, 0.005, {1}), {});
     add_recorders(whole);
     whole.run();
 
     mpm::MpmModel<2> first_model = column_with_absorbing_side();
     MemoryCheckpoint saved;
-    StageDriver<2> first(first_model, settle_then_blow(), top_pressure(first_model, 20e3, 0.005, {1}), {}, &saved);
+    StageDriver<2> first(first_model, settle_then_blow(record_every), top_pressure(first_model, 20e3, 0.005, {1}), {},
+                         &saved);
     add_recorders(first);
     ::setenv("PILEMPM_INTERRUPT_AFTER_STEPS", std::to_string(stop_after).c_str(), 1);
     ::unsetenv("PILEMPM_INTERRUPT_SIGNAL");
@@ -237,16 +253,18 @@ void check_resume(long stop_after) {
     mpm::MpmModel<2> resumed_model = column_with_absorbing_side();
     const auto loads = top_pressure(resumed_model, 20e3, 0.005, {1});
     resumed_model.particles = saved.particles;
-    StageDriver<2> resumed(resumed_model, settle_then_blow(), loads, {});
+    StageDriver<2> resumed(resumed_model, settle_then_blow(record_every), loads, {});
     add_recorders(resumed);
+    if (as_earlier_build) {
+        saved.state.extremes = Table();
+        saved.state.stage_max.clear(), saved.state.stage_min.clear(), saved.state.last_row.clear();
+    }
     resumed.resume(saved.state, saved.solver, saved.history);
     ASSERT_EQ(resumed.run(), StageDriver<2>::Outcome::Completed);
 
-    const Table& a = whole.history();
-    const Table& b = resumed.history();
-    ASSERT_EQ(a.rows(), b.rows());
-    for (std::size_t r = 0; r < a.rows(); ++r)
-        for (std::size_t c = 0; c < a.columns.size(); ++c) ASSERT_EQ(a.data[c][r], b.data[c][r]) << a.columns[c] << " row " << r;
+    expect_same_table(whole.history(), resumed.history());
+    ASSERT_EQ(whole.extremes().rows(), 2u);
+    expect_same_table(whole.extremes(), resumed.extremes());
     EXPECT_GT(whole.solver().absorbed_energy(), 0.0);
     EXPECT_EQ(whole.solver().absorbed_energy(), resumed.solver().absorbed_energy());
     EXPECT_EQ(whole.solver().external_work(), resumed.solver().external_work());
@@ -260,6 +278,50 @@ void check_resume(long stop_after) {
 
 TEST(StageDriver, StoppedInAQuasiStaticStageAndResumedEqualsUninterrupted) { check_resume(150); }
 TEST(StageDriver, StoppedInADynamicStageAndResumedEqualsUninterrupted) { check_resume(420); }
+TEST(StageDriver, StoppedInADecimatedStageAndResumedEqualsUninterrupted) { check_resume(423, 7); }
+TEST(StageDriver, ACheckpointWithoutExtremesHasThemRebuiltFromItsHistory) {
+    check_resume(150, 1, true);
+    check_resume(420, 1, true);
+}
+
+// A blow that stores every 7th row: its rows are the full-rate run's at those steps, every
+// step's while the pulse acts and its last; its extremes are those of every step all the
+// same (the full-rate run's to the bit), so a drive's peaks do not depend on the decimation.
+TEST(StageDriver, ADecimatedStageStoresEveryNthRowAndKeepsTheExactExtremes) {
+    auto run = [](int record_every) {
+        mpm::MpmModel<2> m = column_with_absorbing_side();
+        auto d = std::make_unique<StageDriver<2>>(m, settle_then_blow(record_every), top_pressure(m, 20e3, 0.005, {1}),
+                                                  DriverSettings{});
+        add_recorders(*d);
+        d->run();
+        return std::make_pair(d->history(), d->extremes());
+    };
+    const auto [full, full_extremes] = run(1);
+    const auto [sparse, sparse_extremes] = run(7);
+    expect_same_table(full_extremes, sparse_extremes);
+    const auto& full_step = full.column("step");
+    const auto& sparse_step = sparse.column("step");
+    const auto& full_time = full.column("time_s");
+    const auto& stage = full.column("stage");
+    std::size_t blow_rows = 0, expected = 0, j = 0;
+    const std::size_t first = static_cast<std::size_t>(std::find(stage.begin(), stage.end(), 2.0) - stage.begin());
+    ASSERT_GT(first, 0u);
+    const double start = full_time[first - 1];  // the settling's clock stands at the blow's start
+    for (std::size_t r = first; r < full.rows(); ++r) {
+        const std::size_t n = r - first + 1;                // the blow's step count after this step
+        const double in_stage = full_time[r - 1] - start;  // before this step
+        const bool due = n % 7 == 0 || r + 1 == full.rows() || in_stage < 0.002;
+        if (!due) continue;
+        ++expected;
+        while (j < sparse.rows() && sparse_step[j] < full_step[r]) ++j;
+        ASSERT_LT(j, sparse.rows());
+        ASSERT_EQ(sparse_step[j], full_step[r]);
+        for (std::size_t c = 0; c < full.columns.size(); ++c) ASSERT_EQ(sparse.data[c][j], full.data[c][r]) << full.columns[c];
+    }
+    for (double st : sparse.column("stage")) blow_rows += st == 2.0 ? 1 : 0;
+    EXPECT_EQ(blow_rows, expected);
+    EXPECT_LT(blow_rows, full_step.back() / 3);  // far fewer than the stage's steps
+}
 
 // A checkpoint of an earlier build that recorded fewer columns (here: no probes) resumes
 // with this build's: the old rows keep their values, the new columns are NaN up to the

@@ -55,6 +55,11 @@ io::RunCheckpoint sample_run() {
     run.history = Table("history", {"time_s", "step"});
     run.history.data[0] = {0.0, 1.0 / 3.0};
     run.history.data[1] = {0.0, 1.0};
+    run.driver.extremes = Table("stage_extremes", {"stage", "max_x", "min_x"});
+    run.driver.extremes.add_row({1.0, 2.0 / 3.0, -1.0 / 7.0});
+    run.driver.stage_max = {1.0 / 3.0, 2.0, 5.0};
+    run.driver.stage_min = {0.0, 1.0, -5.0};
+    run.driver.last_row = {1.0 / 3.0, 2.0, 1.0 / 9.0};
     run.case_fingerprint = "case";
     return run;
 }
@@ -79,6 +84,11 @@ TEST(RunCheckpoint, TheDriversStateComesBackExactly) {
     EXPECT_EQ(b.last_blow_end_toe, a.last_blow_end_toe);
     EXPECT_EQ(b.low_set_blows, a.low_set_blows);
     EXPECT_EQ(b.rest_since, a.rest_since);
+    EXPECT_EQ(b.extremes.columns, a.extremes.columns);
+    EXPECT_EQ(b.extremes.data, a.extremes.data);
+    EXPECT_EQ(b.stage_max, a.stage_max);
+    EXPECT_EQ(b.stage_min, a.stage_min);
+    EXPECT_EQ(b.last_row, a.last_row);
     EXPECT_EQ(back.solver.time, run.solver.time);
     EXPECT_EQ(back.solver.steps, run.solver.steps);
     EXPECT_EQ(back.solver.absorbed_energy, run.solver.absorbed_energy);
@@ -106,6 +116,7 @@ TEST(RunCheckpoint, OneFromBeforeTheLastBlowsEndReadsItAsUnknown) {
     mpm::Particles<2> q;
     const io::RunCheckpoint back = io::read_run_checkpoint<2>(file, q);
     EXPECT_TRUE(std::isnan(back.driver.last_blow_end_toe));
+    EXPECT_TRUE(back.driver.extremes.columns.empty());  // the stage driver rebuilds them from the history
     EXPECT_EQ(back.driver.blow_start_toe, s.blow_start_toe);
     EXPECT_EQ(back.driver.low_set_blows, s.low_set_blows);
     fs::remove(file);
