@@ -5,6 +5,7 @@ wished in place at each of a few depths.
 
     calibration_runs.py CASE --depths 5,8,11 --out DIR [--blows 4]
                         [--pilempm build/pilempm] [--threads N] [--export DIR2]
+    calibration_runs.py --from-drive DRIVE --depths 6,8,10 --blows 5 --export DIR2
 
 CASE is an `analysis: mpm` case with a driving stage and a wished-in-place pile (e.g.
 cases/driving/north-sea-monopile.yaml); its mudline is `initial_stress.surface`. For each
@@ -18,13 +19,19 @@ and CASE, is read, not repeated. The drivability case then names these folders u
 blows.csv whole, and of history.csv the columns the calibration reads (time, stage, head
 force and velocity) for the last blow only (the record it fits).
 
+--from-drive DRIVE: no runs; the targets are cut from an installed drive instead (the
+output folder of a finished coupled driving run: its history.csv is written at the end): at each
+depth d the --blows blows from the first that began with the toe d or more below the
+mudline, exported as above (DIR2/drive-<d>m; blows.csv those blows' rows). The fast path
+fitted to them carries what installation did to the soil, which a pile wished in place
+does not; the case reads them with `skip_blows: 0`.
+
 Exit status: 0 success, 1 a run failed, 2 bad input.
 """
 import argparse
 import copy
 import csv
 import os
-import shutil
 import sys
 
 import yaml
@@ -67,13 +74,25 @@ def derived_case(template, case_file, depth, blows):
 HISTORY_COLUMNS = ["time_s", "stage", "pile_head_force_N", "pile_head_velocity_m_s"]
 
 
-def export_run(run_dir, to_dir):
+def export_run(run_dir, to_dir, first_depth=None, count=None):
+    """first_depth, count: only the `count` blows from the first that began that deep."""
     os.makedirs(to_dir, exist_ok=True)
     with open(os.path.join(run_dir, "blows.csv")) as f:
-        blows = list(csv.DictReader(f))
+        reader = csv.DictReader(f)
+        header = reader.fieldnames
+        blows = list(reader)
+    if first_depth is not None:
+        start = next((i for i, b in enumerate(blows) if float(b["toe_depth_before_m"]) >= first_depth), None)
+        if start is None or start + count > len(blows):
+            raise InputError(f"{run_dir}/blows.csv: no {count} blows from {first_depth:g} m (the drive reached "
+                             f"{float(blows[-1]['toe_depth_m']) if blows else 0:.2f} m)")
+        blows = blows[start:start + count]
     if not blows:
         raise RuntimeError(f"{run_dir}/blows.csv: no blows")
-    shutil.copyfile(os.path.join(run_dir, "blows.csv"), os.path.join(to_dir, "blows.csv"))
+    with open(os.path.join(to_dir, "blows.csv"), "w", newline="") as g:
+        w = csv.DictWriter(g, fieldnames=header, lineterminator="\n")
+        w.writeheader()
+        w.writerows(blows)
     last = blows[-1]["stage"]
     with open(os.path.join(run_dir, "history.csv")) as f, open(os.path.join(to_dir, "history.csv"), "w", newline="") as g:
         w = csv.writer(g)
@@ -85,9 +104,10 @@ def export_run(run_dir, to_dir):
 
 def main():
     ap = argparse.ArgumentParser(description="Coupled runs at a few depths for a calibrated fast path")
-    ap.add_argument("case")
+    ap.add_argument("case", nargs="?")
     ap.add_argument("--depths", required=True, help="m below the mudline, separated by commas")
-    ap.add_argument("--out", required=True)
+    ap.add_argument("--out")
+    ap.add_argument("--from-drive", help="an installed drive's folder to cut the targets from (no runs)")
     ap.add_argument("--blows", type=int, default=4)
     ap.add_argument("--pilempm", default=os.path.join(ROOT, "build", "pilempm"))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
@@ -96,6 +116,16 @@ def main():
     depths = study_runs.numbers(args.depths, "--depths", "depths in m below the mudline")
     if args.blows < 1:
         raise InputError(f"--blows: expected at least 1, got {args.blows}")
+    if args.from_drive:
+        if not args.export:
+            raise InputError("--from-drive: expected --export DIR2 (where the targets go)")
+        for d in depths:
+            to = os.path.join(args.export, f"drive-{d:g}m")
+            export_run(args.from_drive, to, d, args.blows)
+            print(f"  {to}")
+        return 0
+    if not args.case or not args.out:
+        raise InputError("expected CASE and --out DIR (or --from-drive DRIVE)")
     with open(args.case) as f:
         template = yaml.safe_load(f)
     for d in depths:

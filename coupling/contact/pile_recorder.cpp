@@ -69,7 +69,7 @@ void PileRecorder::add_columns(std::vector<std::string>& columns) const {
         columns.push_back(c);
 }
 
-void PileRecorder::complete(Table& history) const {
+void complete_pile_history(Table& history) {
     auto index = [&](const char* name) {
         return static_cast<std::size_t>(std::find(history.columns.begin(), history.columns.end(), name) - history.columns.begin());
     };

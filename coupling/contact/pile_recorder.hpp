@@ -1,7 +1,7 @@
 #pragma once
 // The coupled pile's columns in a run's history: the head's settlement and the jack's
-// force, the soil's axial resistance on the pile split into outer shaft, inner shaft and
-// base (the toe's annulus), the points in contact, those let go inside the pile and the
+// force, the soil's axial resistance on the pile split into outer shaft, inner shaft (and
+// their sum) and base (the toe's annulus), the points in contact, those let go inside the pile and the
 // deepest penetration, the toe's elevation and the head's velocity (down positive), the
 // hammer's work (ENTHRU), the steel's largest axial compression and tension, the mean excess
 // pore pressure just below the toe, the length of the soil plug (open piles), the
@@ -15,14 +15,17 @@
 
 namespace pilempm::coupling {
 
+// An earlier build's history rows: shaft_resistance_N (recorded since 2026-12-07), where
+// NaN, from the outer and inner shaft's (nothing when a column is missing).
+void complete_pile_history(Table& history);
+
 class PileRecorder final : public Recorder<2> {
 public:
     // ground_elevation: the seabed in the soil's frame, m (the top of the embedment).
     PileRecorder(const CoupledPile& pile, double ground_elevation) : pile_(pile), ground_(ground_elevation) {}
     void add_columns(std::vector<std::string>& columns) const override;
     void sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>& solver, std::vector<double>& row) const override;
-    // shaft_resistance_N (recorded since 2026-12-07) from the outer and inner shaft's.
-    void complete(Table& history) const override;
+    void complete(Table& history) const override { complete_pile_history(history); }
 
 private:
     const CoupledPile& pile_;
