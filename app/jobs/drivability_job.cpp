@@ -51,6 +51,17 @@ std::vector<VerificationCheck> run_checks(const io::DrivabilityCase& c, const co
                 all.push_back(make_check(label, p.fast_set_after, p.target.set, c.calibration_tolerance, true,
                                          "the fitted fast path's set against the coupled model's (" + p.target.source + ")"));
             }
+        } else if (name == "calibrated_blow_count" && calibration) {
+            // The calibrated sheet's blows over the drive's depths against the coupled drive's.
+            for (const auto& run : r.runs)
+                if (run.soil_case == "calibrated" && run.energy_level == r.runs.front().energy_level) {
+                    const auto& m = c.reference_drive;
+                    const auto k = coupling::compare_driving(coupling::predicted_from_table(run.table), m);
+                    char label[80];
+                    std::snprintf(label, sizeof label, "calibrated_blows_%.2f_to_%.2fm", m.depth.front(), m.depth.back());
+                    all.push_back(make_check(label, k.predicted_total, k.measured_total, c.blow_count_tolerance, true,
+                                             "the calibrated sheet's blows against the coupled drive's"));
+                }
         } else if (name == "bearing_graph_monotonic") append(coupling::check_bearing_graph(r.bearing_graph));
         else if (name == "blow_energy_balance") append(coupling::check_blow_energy(s, ref, depth));
         else if (name == "danish_formula") {

@@ -6,6 +6,7 @@
 #include "coupling/wave_equation/cpt_interpretation.hpp"
 #include "coupling/wave_equation/drivability.hpp"
 #include "coupling/wave_equation/fast_path_calibration.hpp"
+#include "coupling/wave_equation/field_comparison.hpp"
 #include "io/cases/pile_hammer_input.hpp"
 
 namespace pilempm::io {
@@ -55,6 +56,10 @@ struct DrivabilityCase : CaseFile, PileInput, HammerInput {
     double observed_self_weight_penetration = -1.0;  // m, for the validation check
     double observed_tolerance = 0.5;                 // m
     double calibration_tolerance = 0.1;              // the fitted sets against the coupled, relative
+    // calibrated_blow_count: a coupled drive's blow count (its blow_count.csv, complete
+    // intervals) that the calibrated sheet's blows over the same depths are checked against.
+    coupling::MeasuredDriving reference_drive;
+    double blow_count_tolerance = 0.15;              // relative
     // calibration: the fast path fitted to coupled runs (empty targets: none).
     std::vector<coupling::CalibrationTarget> calibration_targets;
     std::string calibration_soil_case = "best_estimate";

@@ -17,7 +17,7 @@ namespace {
 const std::vector<std::string> kAnalyses = {"pile_wave", "drivability", "drivability_study", "mpm", "element_test"};
 const std::vector<std::string> kChecks = {"static_push", "bearing_graph_monotonic",
                                           "blow_energy_balance", "danish_formula",
-                                          "self_weight_penetration", "calibration_sets"};
+                                          "self_weight_penetration", "calibration_sets", "calibrated_blow_count"};
 
 coupling::SrdMethod method_from(const std::string& name) {
     if (name == "alm_hamre_2001") return coupling::SrdMethod::AlmHamre2001;
@@ -62,6 +62,22 @@ std::string case_relative_file(MapReader& m, const std::string& key) {
     if (p.is_relative()) p = std::filesystem::path(m.file()).parent_path() / p;
     if (!std::filesystem::is_regular_file(p)) m.fail(key, "a readable CSV file", p.string() + " missing");
     return p.string();
+}
+
+// A coupled drive's blow_count.csv (depth_bottom_m, blows_per_m, cumulative_blows per
+// interval) as a record: each interval's bottom, its last one left out (the drive ended in it).
+coupling::MeasuredDriving read_drive_blow_count(MapReader& m, const std::string& key) {
+    const std::string path = case_relative_file(m, key);
+    const HeaderedCsv t = read_headered_csv(path);
+    for (const char* col : {"depth_bottom_m", "blows_per_m", "cumulative_blows"})
+        if (t.column(col) < 0) m.fail(key, "a coupled drive's blow_count.csv (no column " + std::string(col) + ")", path);
+    coupling::MeasuredDriving d;
+    d.depth = t.numbers("depth_bottom_m");
+    d.blows_per_m = t.numbers("blows_per_m");
+    d.cumulative_blows = t.numbers("cumulative_blows");
+    if (d.depth.size() < 3) m.fail(key, "a drive of three depth intervals or more", path);
+    for (auto* v : {&d.depth, &d.blows_per_m, &d.cumulative_blows}) v->pop_back();
+    return d;
 }
 
 void read_cpt_options(MapReader& m, coupling::CptInterpretationOptions& o) {
@@ -402,6 +418,12 @@ DrivabilityCase read_drivability_case(const std::string& file) {
         if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "calibration_sets") !=
                 c.verification_checks.end() && c.calibration_targets.empty())
             v->fail("checks", "a calibration: section for the calibration_sets check", "none");
+        const bool blow_count = std::find(c.verification_checks.begin(), c.verification_checks.end(),
+                                          "calibrated_blow_count") != c.verification_checks.end();
+        if (blow_count && c.calibration_targets.empty())
+            v->fail("checks", "a calibration: section for the calibrated_blow_count check", "none");
+        if (blow_count) c.reference_drive = read_drive_blow_count(*v, "reference_blow_count");
+        c.blow_count_tolerance = v->number_or("blow_count_tolerance", 0.15, positive("relative tolerance on the blows"));
         if (std::find(c.verification_checks.begin(), c.verification_checks.end(), "self_weight_penetration") !=
                 c.verification_checks.end() && c.observed_self_weight_penetration < 0.0)
             v->fail("observed_self_weight_penetration", "the observed depth for the self_weight_penetration check");

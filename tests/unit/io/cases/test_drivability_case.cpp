@@ -162,5 +162,23 @@ TEST(DrivabilityCase, CalibrationReadsTheCoupledRunsBlowsAndTheLastHeadRecord) {
     const std::string bad_case = write_case(body + "calibration:\n  runs: [" + run.string() + "]\n  soil_case: middle\n");
     EXPECT_NE(error_of(bad_case).find("calibration.soil_case"), std::string::npos) << error_of(bad_case);
     for (const auto& file : {f, missing, too_few, bad_fit, bad_case}) fs::remove(file);
+
+    // A coupled drive's blow count as the reference of the calibrated sheet: each interval's
+    // bottom, the last (the drive ended in it) left out; a file of another kind names the key.
+    std::ofstream(run / "blow_count.csv") << "depth_top_m,depth_bottom_m,blows,blows_per_m,cumulative_blows\n"
+                                             "5,5.25,8,32,8\n5.25,5.5,13,52,21\n5.5,5.75,17,68,38\n5.75,6,5,20,43\n";
+    const std::string calibration = "calibration:\n  runs: [" + run.string() + "]\n";
+    const std::string counted = write_case(body + calibration + "verification:\n  checks: [calibrated_blow_count]\n"
+                                           "  reference_blow_count: " + (run / "blow_count.csv").string() + "\n");
+    const io::DrivabilityCase d = io::read_drivability_case(counted);
+    EXPECT_EQ(d.reference_drive.depth, (std::vector<double>{5.25, 5.5, 5.75}));
+    EXPECT_EQ(d.reference_drive.cumulative_blows, (std::vector<double>{8, 21, 38}));
+    EXPECT_DOUBLE_EQ(d.reference_drive.total_blows(), 30.0);
+    EXPECT_DOUBLE_EQ(d.blow_count_tolerance, 0.15);
+    const std::string wrong = write_case(body + calibration + "verification:\n  checks: [calibrated_blow_count]\n"
+                                         "  reference_blow_count: " + (run / "blows.csv").string() + "\n");
+    EXPECT_NE(error_of(wrong).find("verification.reference_blow_count"), std::string::npos) << error_of(wrong);
+    EXPECT_NE(error_of(wrong).find("no column depth_bottom_m"), std::string::npos) << error_of(wrong);
+    for (const auto& file : {counted, wrong}) fs::remove(file);
     fs::remove_all(run);
 }
