@@ -60,9 +60,19 @@ void MpmRunOutput<D>::stage_end(int stage, const coupling::StageSpec& spec, cons
     const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     if (!report.stopped) walls_.push_back({stage, now - stage_began_});
     if (!quiet_ && spec.blow && !report.stopped && body_) {
-        // The toe's depth below the seabed and the blow's set (as blows.csv counts it).
-        std::printf("%s: toe %.3f m below the seabed, set %.1f mm, %ld steps, %.1f s\n", spec.name.c_str(),
+        // The toe's depth below the seabed and the blow's set (as blows.csv counts it); with
+        // a target depth, what is left at the last blows' set and pace (blow and pause).
+        outlook_.add(report.set, last_blow_end_ < 0.0 ? -1.0 : now - last_blow_end_);
+        last_blow_end_ = now;
+        std::printf("%s: toe %.3f m below the seabed, set %.1f mm, %ld steps, %.1f s", spec.name.c_str(),
                     ground_ - body_->toe_elevation(), 1e3 * report.set, report.steps, now - stage_began_);
+        const double remaining = body_->toe_elevation() - spec.end_toe_elevation;
+        const auto e = outlook_.to_go(remaining);
+        if (spec.end_toe_elevation > -1e299 && remaining > 0.0 && e.blows >= 0.0) {
+            std::printf("; %.2f m to go, ~%.0f blows", remaining, e.blows);
+            if (e.seconds >= 0.0) std::printf(", ~%.1f h", e.seconds / 3600.0);
+        }
+        std::printf("\n");
     }
     if (!quiet_ && spec.drive >= 0 && spec.consolidation && !report.stopped)  // a pause: its cost beside the blows'
         std::printf("%s: %ld implicit steps, %.1f s (linear solves %.1f s, %d of %d on a kept set-up)\n",

@@ -10,6 +10,7 @@
 
 #include "coupling/driver/stage_driver.hpp"
 #include "io/hdf5/history_segments.hpp"
+#include "io/writers/drive_outlook.hpp"
 #include "io/writers/staged_directory.hpp"
 #include "io/writers/stage_progress.hpp"
 #include "io/writers/vtk_particle_writer.hpp"
@@ -79,6 +80,8 @@ private:
     std::vector<StageWallTime> walls_;
     double stage_began_ = 0.0;  // s on the steady clock
     double ground_ = 0.0;
+    DriveOutlook outlook_;            // a drive's blows and time to its target, for the log
+    double last_blow_end_ = -1.0;     // s on the steady clock (< 0: none yet in this invocation)
 };
 
 extern template class MpmRunOutput<2>;

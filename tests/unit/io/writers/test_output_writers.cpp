@@ -10,6 +10,8 @@
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
+
+#include "io/writers/drive_outlook.hpp"
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <filesystem>
@@ -251,4 +253,23 @@ TEST(OutputWriters, Hdf5RejectsWrongFinalStateSize) {
                                                {0.0, 0.0}, {}, {}),
                  std::runtime_error);
     EXPECT_FALSE(fs::exists(file));
+}
+
+// A drive's outlook in its log: the depth left over the mean set of the last blows (a window
+// of them), the time at their mean pace; none while the pile does not advance.
+TEST(DriveOutlook, BlowsAndTimeToGoFollowTheRecentSetsAndPace) {
+    pilempm::io::DriveOutlook o(3);
+    EXPECT_LT(o.to_go(1.0).blows, 0.0);  // no blow yet
+    o.add(0.010, -1.0);                   // the first blow of the invocation: no pace yet
+    EXPECT_DOUBLE_EQ(o.to_go(1.0).blows, 100.0);
+    EXPECT_LT(o.to_go(1.0).seconds, 0.0);
+    o.add(0.020, 20.0);
+    o.add(0.030, 10.0);
+    o.add(0.010, 30.0);                   // the window keeps 0.020, 0.030, 0.010
+    EXPECT_DOUBLE_EQ(o.to_go(0.6).blows, 30.0);
+    EXPECT_DOUBLE_EQ(o.to_go(0.6).seconds, 600.0);  // 20 s a blow
+    pilempm::io::DriveOutlook stuck(2);
+    stuck.add(0.0, 10.0);
+    stuck.add(-0.001, 10.0);              // rebounding: no estimate
+    EXPECT_LT(stuck.to_go(1.0).blows, 0.0);
 }
