@@ -74,32 +74,42 @@ def derived_case(template, case_file, depth, blows):
 HISTORY_COLUMNS = ["time_s", "stage", "pile_head_force_N", "pile_head_velocity_m_s"]
 
 
-def export_run(run_dir, to_dir, first_depth=None, count=None):
-    """first_depth, count: only the `count` blows from the first that began that deep."""
-    os.makedirs(to_dir, exist_ok=True)
+def export_runs(run_dir, windows):
+    """windows: (to_dir, first_depth, count) each; first_depth None: every blow, else the
+    `count` blows from the first that began that deep. history.csv is read once for all."""
     with open(os.path.join(run_dir, "blows.csv")) as f:
         reader = csv.DictReader(f)
         header = reader.fieldnames
         blows = list(reader)
-    if first_depth is not None:
-        start = next((i for i, b in enumerate(blows) if float(b["toe_depth_before_m"]) >= first_depth), None)
-        if start is None or start + count > len(blows):
-            raise InputError(f"{run_dir}/blows.csv: no {count} blows from {first_depth:g} m (the drive reached "
-                             f"{float(blows[-1]['toe_depth_m']) if blows else 0:.2f} m)")
-        blows = blows[start:start + count]
-    if not blows:
-        raise RuntimeError(f"{run_dir}/blows.csv: no blows")
-    with open(os.path.join(to_dir, "blows.csv"), "w", newline="") as g:
-        w = csv.DictWriter(g, fieldnames=header, lineterminator="\n")
-        w.writeheader()
-        w.writerows(blows)
-    last = blows[-1]["stage"]
-    with open(os.path.join(run_dir, "history.csv")) as f, open(os.path.join(to_dir, "history.csv"), "w", newline="") as g:
-        w = csv.writer(g)
-        w.writerow(HISTORY_COLUMNS)
-        for row in csv.DictReader(f):
-            if row["stage"] == last:
-                w.writerow([row[c] for c in HISTORY_COLUMNS])
+    last_stage = {}  # each window's last blow's stage -> the history files its record goes to
+    for to_dir, first_depth, count in windows:
+        chosen = blows
+        if first_depth is not None:
+            start = next((i for i, b in enumerate(blows) if float(b["toe_depth_before_m"]) >= first_depth), None)
+            if start is None or start + count > len(blows):
+                raise InputError(f"{run_dir}/blows.csv: no {count} blows from {first_depth:g} m (the drive reached "
+                                 f"{float(blows[-1]['toe_depth_m']) if blows else 0:.2f} m)")
+            chosen = blows[start:start + count]
+        if not chosen:
+            raise RuntimeError(f"{run_dir}/blows.csv: no blows")
+        os.makedirs(to_dir, exist_ok=True)
+        with open(os.path.join(to_dir, "blows.csv"), "w", newline="") as g:
+            w = csv.DictWriter(g, fieldnames=header, lineterminator="\n")
+            w.writeheader()
+            w.writerows(chosen)
+        last_stage.setdefault(chosen[-1]["stage"], []).append(to_dir)
+    files = {d: open(os.path.join(d, "history.csv"), "w", newline="") for dirs in last_stage.values() for d in dirs}
+    try:
+        writers = {d: csv.writer(g) for d, g in files.items()}
+        for w in writers.values():
+            w.writerow(HISTORY_COLUMNS)
+        with open(os.path.join(run_dir, "history.csv")) as f:
+            for row in csv.DictReader(f):
+                for d in last_stage.get(row["stage"], ()):
+                    writers[d].writerow([row[c] for c in HISTORY_COLUMNS])
+    finally:
+        for g in files.values():
+            g.close()
 
 
 def main():
@@ -119,9 +129,9 @@ def main():
     if args.from_drive:
         if not args.export:
             raise InputError("--from-drive: expected --export DIR2 (where the targets go)")
-        for d in depths:
-            to = os.path.join(args.export, f"drive-{d:g}m")
-            export_run(args.from_drive, to, d, args.blows)
+        windows = [(os.path.join(args.export, f"drive-{d:g}m"), d, args.blows) for d in depths]
+        export_runs(args.from_drive, windows)
+        for to, _, _ in windows:
             print(f"  {to}")
         return 0
     if not args.case or not args.out:
@@ -134,7 +144,7 @@ def main():
                             args.case)
         print(f"  {out}")
         if args.export:
-            export_run(out, os.path.join(args.export, os.path.basename(out)))
+            export_runs(out, [(os.path.join(args.export, os.path.basename(out)), None, None)])
             print(f"  exported to {os.path.join(args.export, os.path.basename(out))}")
     return 0
 
