@@ -154,6 +154,7 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
 void CoupledPile::step(mpm::MpmSolver<2>& soil, mpm::MpmModel<2>& m, double dt, int stage) {
     advance(m, dt, stage);
     soil.step(dt);
+    after_step(m, soil.stencils());
 }
 
 double CoupledPile::unbalanced_force_ratio() const {

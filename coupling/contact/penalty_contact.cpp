@@ -92,6 +92,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
     segment_force_.assign(2 * s.a.size(), 0.0);
     totals_ = {};
     touches_.clear();
+    near_.clear();
     std::fill(p.external_force.begin(), p.external_force.end(), 0.0);
     // The search margin: the largest half-extent of a point domain along an axis.
     double margin = 0.0, half[4];
@@ -135,12 +136,24 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         auto thickness_along = [&](const double* dir) {
             return 2.0 * (std::abs(half[0] * dir[0] + half[1] * dir[1]) + std::abs(half[2] * dir[0] + half[3] * dir[1]));
         };
+        // The domain's area (per radian in axisymmetry): the face a traction acts on is this
+        // over the thickness across it.
+        const double domain = 4.0 * std::abs(half[0] * half[3] - half[1] * half[2]) * (settings_.axisymmetric ? x[0] : 1.0);
+        auto face = [&](const double* dir) { return domain / thickness_along(dir); };
         auto stiffness = [&](const double* dir) {
             const double thickness = thickness_along(dir);
-            return settings_.penalty_factor * modulus * p.volume[i] / (thickness * thickness);
+            return settings_.penalty_factor * modulus * domain / (thickness * thickness);
         };
         const double margin = settings_.stability_margin;
-        totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(stiffness(nrm) * compliance));
+        const double k_near = stiffness(nrm);
+        totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(k_near * compliance));
+        // The grid's step counts the springs of the pairs that touch or could within a step
+        // (a point moves far less than a tenth of its thickness in one).
+        const NearPair pair{i, k_near, s.a[k], s.b[k], xi};
+        const double reach_within = 0.1 * thickness_along(nrm);
+        auto keep_if_near = [&](double apart) {
+            if (apart < reach_within) near_.push_back(pair);
+        };
         double gap, share = 1.0;
         if ((xi <= 0.0 || xi >= 1.0) && rel[0] * nrm[0] + rel[1] * nrm[1] > 0.0) {
             // Past the segment's end, outside: the corner node against the point's domain
@@ -150,6 +163,8 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             const double a = (-rel[0] * half[3] + rel[1] * half[2]) / det;
             const double b = (rel[0] * half[1] - rel[1] * half[0]) / det;
             if (std::abs(a) >= 1.0 || std::abs(b) >= 1.0) {
+                keep_if_near(std::max((std::abs(a) - 1.0) * std::hypot(half[0], half[1]),
+                                      (std::abs(b) - 1.0) * std::hypot(half[2], half[3])));
                 release(i);
                 continue;
             }
@@ -200,6 +215,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             // thinner than the point can catch it at a corner; it is let go (pushing it out
             // from there would take a force of the penalty times its half-size) and counted.
             if (gap >= 0.0) {
+                keep_if_near(gap);
                 release(i);
                 continue;
             }
@@ -215,12 +231,15 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
             overlap_[i] = std::min(0.0, std::max(overlap_[i], gap));
             gap -= overlap_[i];
             if (gap >= 0.0) {
+                keep_if_near(gap);
                 release(i, true);
                 continue;
             }
         }
         const double kn_full = stiffness(nrm);
         totals_.stable_time_step = std::min(totals_.stable_time_step, margin / std::sqrt(kn_full * compliance));
+        near_.push_back(pair);
+        near_.back().stiffness = std::max(k_near, kn_full);
         const double kn = share * kn_full;
         const double fn = -kn * gap;
         // Tangential: a spring on the slip since the last step, capped by Coulomb.
@@ -235,7 +254,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         // fn - p A, A = V_p / h_n its face (Terzaghi; shaft friction under a rapid load grew
         // with the pore pressure it raised).
         const double pore = p.pore_pressure.empty() ? 0.0 : p.pore_pressure[i];
-        const double cap = mu * std::max(0.0, fn - share * pore * p.volume[i] / thickness_along(nrm));
+        const double cap = mu * std::max(0.0, fn - share * pore * face(nrm));
         if (std::abs(ft) > cap) ft = std::copysign(cap, ft);  // slip, else stick
         tangential_[i] = ft;
         segment_[i] = k;
@@ -252,6 +271,40 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         ++totals_.points_in_contact;
         totals_.max_penetration = std::max(totals_.max_penetration, -gap);
     }
+}
+
+double PenaltyContact::grid_stable_time_step(const std::vector<double>& node_mass,
+                                             const std::vector<mpm::Stencil<2>>& stencils, const ContactSurface& s) {
+    if (near_.empty()) return 1e300;
+    node_springs_.resize(node_mass.size(), 0.0);
+    master_springs_.resize(s.x.size() / 2, 0.0);
+    const bool master = !s.inverse_mass.empty();
+    for (const NearPair& q : near_) {
+        const mpm::Stencil<2>& st = stencils[q.point];
+        for (int e = 0; e < st.count; ++e) node_springs_[st.e[e].node] += q.stiffness * st.e[e].N;
+        master_springs_[q.a] += q.stiffness * (1.0 - q.xi);
+        master_springs_[q.b] += q.stiffness * q.xi;
+    }
+    // Element by element: pair p's share of node i's mass is k_p N_ip / S_i, so its own
+    // frequency on its shares, sum_i N_ip S_i / m_i (+ the pile's nodes alike), bounds the
+    // whole system's.
+    double omega2 = 0.0;
+    for (const NearPair& q : near_) {
+        const mpm::Stencil<2>& st = stencils[q.point];
+        double w2 = 0.0;
+        for (int e = 0; e < st.count; ++e)
+            if (st.e[e].N > 0.0) w2 += st.e[e].N * node_springs_[st.e[e].node] / node_mass[st.e[e].node];
+        if (master)
+            w2 += settings_.ring * ((1.0 - q.xi) * master_springs_[q.a] * s.inverse_mass[q.a] +
+                                    q.xi * master_springs_[q.b] * s.inverse_mass[q.b]);
+        omega2 = std::max(omega2, w2);
+    }
+    for (const NearPair& q : near_) {
+        const mpm::Stencil<2>& st = stencils[q.point];
+        for (int e = 0; e < st.count; ++e) node_springs_[st.e[e].node] = 0.0;
+        master_springs_[q.a] = master_springs_[q.b] = 0.0;
+    }
+    return omega2 > 0.0 ? settings_.stability_margin / std::sqrt(omega2) : 1e300;
 }
 
 std::vector<std::pair<std::string, std::vector<double>>> PenaltyContact::outputs() const {

@@ -21,11 +21,14 @@ namespace pilempm::coupling {
 
 struct ContactSettings {
     double friction = 0.0;  // mu = tan(delta)
-    // The penalty per point from the soil's stiffness, k_n = penalty_factor M V_p / h_p^2
+    // The penalty per point from the soil's stiffness, k_n = penalty_factor M A_p / h_p^2
     // (M the point's P-wave modulus in its current state, never below its material's
-    // reference one; V_p its volume, h_p its thickness across the contact): a contact
-    // traction sigma penetrates g = sigma h_p / (penalty_factor M), g / h =
-    // sigma / (2 penalty_factor M) with two points a cell. A soil that stiffens under the
+    // reference one; A_p its domain's area, times r in axisymmetry; h_p the domain's
+    // thickness across the contact): a contact traction sigma on the domain's face
+    // penetrates g = sigma h_p / (penalty_factor M), g / h = sigma / (2 penalty_factor M)
+    // with two points a cell. The domain, not the point's volume: a point carried from the
+    // axis round a toe keeps the small volume of its first radius in a full-size uGIMP
+    // domain, and on its volume it took the rim's load at five times that gap. A soil that stiffens under the
     // pile's toe stiffens its contact with it, so sigma / M stays near the soil's own strain.
     // Independent of the step, so the contact stores and gives back its energy; the step it
     // needs (the point and the segment's nodes as two masses on the spring,
@@ -37,6 +40,7 @@ struct ContactSettings {
     double stability_margin = 1.0;
     double tangential_ratio = 1.0;  // k_t / k_n
     double ring = 1.0;              // master force per point force: 2 pi axisymmetric, 1 plane strain
+    bool axisymmetric = false;      // the soil per radian: a point's face is its domain's times r
     // A body wished in place: the overlaps found at the first step are taken as the points'
     // zero gap, and forgotten as each point moves out of its overlap.
     bool ignore_initial_overlap = false;
@@ -75,6 +79,16 @@ public:
     // step the forces act over.
     void compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const ContactSurface& surface, double dt,
                  const std::vector<std::unique_ptr<mpm::ConstitutiveModel>>& materials);
+
+    // The step the contact allows on the grid the soil's last step scattered to (node_mass per
+    // grid entry, the points' stencils of that step), for the pairs the last compute() found:
+    // the springs on each node summed and the node's mass split among them in proportion,
+    // so that omega^2 <= max over pairs of sum_i N_ip S_i / m_i (S_i = sum_q k_q N_iq), the
+    // pile's side likewise (a rigorous bound on the coupled system's highest frequency). A
+    // light point among heavy ones no longer sets the step by its own mass; the points alone
+    // bound it by max k / m_p (totals().stable_time_step), which this never exceeds.
+    double grid_stable_time_step(const std::vector<double>& node_mass, const std::vector<mpm::Stencil<2>>& stencils,
+                                 const ContactSurface& surface);
 
     const ContactSettings& settings() const { return settings_; }
     const std::vector<double>& nodal_force() const { return nodal_force_; }
@@ -120,6 +134,16 @@ private:
     // Per node, the segment that starts there and the one that ends there (-1: none): the
     // two that share a corner.
     std::vector<int> starting_, ending_;
+    // The pairs the search found (touching or about to) with their stiffest spring, for the
+    // grid's step; scratch sums of springs per grid entry and per surface node.
+    struct NearPair {
+        long point;
+        double stiffness;  // N/m per radian (per metre in plane strain)
+        int a, b;          // the segment's nodes
+        double xi;
+    };
+    std::vector<NearPair> near_;
+    std::vector<double> node_springs_, master_springs_;
 };
 
 }  // namespace pilempm::coupling

@@ -18,6 +18,9 @@ public:
     // time_in_stage: s since the stage began (0 throughout a quasi-static stage).
     virtual void before_step(mpm::MpmModel<D>& m, int stage, bool quasi_static, double dt, double time_in_stage) = 0;
     virtual void come_to_rest() = 0;
+    // After the soil's step: its grid masses and the points' weights of that step (a
+    // contact's stable step from the grid).
+    virtual void after_step(const mpm::MpmModel<D>& /*m*/, const std::vector<mpm::Stencil<D>>& /*stencils*/) {}
     // After a step in which the soil moved at rest (a pause's consolidation step), the body
     // follows the soil it bears on; x_before: the points' positions before that step.
     virtual void follow_soil(const mpm::MpmModel<D>& /*m*/, const std::vector<double>& /*x_before*/) {}

@@ -149,6 +149,7 @@ void StageDriver<D>::step(double dt, bool quasi_static) {
         body_->before_step(m_, state_.stage, quasi_static, dt,
                            quasi_static ? 0.0 : solver_.time() - state_.stage_start_time);
     solver_.step(dt);
+    if (body_) body_->after_step(m_, solver_.stencils());
 }
 
 // Pseudo-time: the clock stands still, held loads only, until equilibrium. The local damping

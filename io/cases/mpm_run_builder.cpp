@@ -419,6 +419,7 @@ MpmRun<D> build_mpm_run(const MpmCase& c) {
             pile.contact.stability_margin = 2.0 * c.cfl;
             pile.contact.corner_overlap_share = c.pile.corner_overlap_share;
             pile.contact.ring = full_ring(1.0);
+            pile.contact.axisymmetric = true;
             pile.contact.ignore_initial_overlap = c.pile.wished_in_place;
             pile.frame.toe_elevation = c.pile.toe_elevation;
             // A solid (closed-ended) pile has no soil inside: no cut through the grid's fields.

@@ -133,6 +133,9 @@ public:
         time_ = t;
         steps_ = steps;
     }
+    // Each point's weights (grid entries and N) of the last step's scatter, and the grid's
+    // masses of that step in model().grid.mass: what a contact needs for its stable step.
+    const std::vector<Stencil<D>>& stencils() const { return stencil_; }
     SolverState state() const;
     void restore(const SolverState& s);
     // Static stages (quasi-static): absorbing boundaries hold their normal and record the

@@ -92,6 +92,7 @@ Collision collide(double h) {
     mpm::MpmSolver<2> soil(m);
     ContactSettings settings;
     settings.ring = full_ring(1.0);
+    settings.axisymmetric = true;
     CoupledPile coupled(pile, settings, PileFrame{kLength + gap}, 0.0, false);  // no soil inside: no cut
 
     const double soil_dt = soil.stable_time_step();
@@ -179,6 +180,7 @@ TEST(PileContactSurface, InAPauseThePileFollowsTheSoilItBearsOn) {
     mpm::MpmSolver<2> soil(m);
     ContactSettings settings;
     settings.ring = full_ring(1.0);
+    settings.axisymmetric = true;
     CoupledPile coupled(pile, settings, PileFrame{kLength + 0.2 * h}, 0.0, false);
     const double soil_dt = soil.stable_time_step();
     for (int n = 0; n < 2000 && coupled.contact().touches().empty(); ++n) coupled.step(soil, m, coupled.stable_time_step(m, soil_dt));
@@ -203,6 +205,7 @@ TEST(PileContactSurface, TheWeightsWorkOnAFallingPileIsItsKineticEnergy) {
         mpm::MpmSolver<2> soil(m);
         ContactSettings settings;
         settings.ring = full_ring(1.0);
+        settings.axisymmetric = true;
         CoupledPile coupled(pile, settings, PileFrame{kLength + 1.0}, g, false);  // 1 m above the soil
         coupled.set_gravity_factor(factor);
         const double dt = coupled.stable_time_step(m, soil.stable_time_step());

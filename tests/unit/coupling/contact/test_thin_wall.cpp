@@ -100,6 +100,7 @@ std::pair<double, double> run(bool cut) {
     ContactSettings settings;
     settings.friction = 0.3;
     settings.ring = full_ring(1.0);
+    settings.axisymmetric = true;
     PenaltyContact contact(settings);
     mpm::MpmSolver<2> soil(m);
     contact.compute(m.particles, m.shape, surface, soil.stable_time_step(), m.materials);
