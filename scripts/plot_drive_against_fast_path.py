@@ -88,11 +88,16 @@ def main(argv):
     ax_c.set_xlabel("Cumulative blows from %.2f m" % start)
     ax_n.set_ylabel("Toe depth below the seabed (m)")
     ax_n.set_ylim(deepest + 1.0, start - 0.25)
+    # One legend for both panels, under them: inside either it hid the deepest bars.
+    entries = {}
     for ax in (ax_n, ax_c):
         ax.grid(True, alpha=0.4)
-        ax.legend(fontsize=8)
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            entries.setdefault(label, handle)
+    rows = (len(entries) + 1) // 2
+    fig.legend(list(entries.values()), list(entries.keys()), loc="lower center", ncol=2, fontsize=8)
     fig.suptitle("Coupled MPM-FEM drive beside the fast path")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.035 * rows + 0.02, 1, 1))
     fig.savefig(out, dpi=120)
     plt.close(fig)
     return 0
