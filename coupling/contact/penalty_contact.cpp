@@ -251,7 +251,7 @@ void PenaltyContact::compute(mpm::Particles<2>& p, mpm::ShapeKind kind, const Co
         double ft = (same_face ? tangential_[i] : 0.0) - settings_.tangential_ratio * kn * vrel * dt;
         // Coulomb on the effective normal force: the point pushes with the mixture's stress
         // (the water's excess pressure p reaches the steel through it), the grains with
-        // fn - p A, A = V_p / h_n its face (Terzaghi; shaft friction under a rapid load grew
+        // fn - p A, A the domain's face across n (Terzaghi; shaft friction under a rapid load grew
         // with the pore pressure it raised).
         const double pore = p.pore_pressure.empty() ? 0.0 : p.pore_pressure[i];
         const double cap = mu * std::max(0.0, fn - share * pore * face(nrm));

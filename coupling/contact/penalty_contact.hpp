@@ -31,8 +31,8 @@ struct ContactSettings {
     // domain, and on its volume it took the rim's load at five times that gap. A soil that stiffens under the
     // pile's toe stiffens its contact with it, so sigma / M stays near the soil's own strain.
     // Independent of the step, so the contact stores and gives back its energy; the step it
-    // needs (the point and the segment's nodes as two masses on the spring,
-    // omega dt <= stability_margin) is totals().stable_time_step.
+    // needs (omega dt <= stability_margin) is grid_stable_time_step() on the grid's masses,
+    // totals().stable_time_step on the points' own (a run's first step).
     double penalty_factor = 4.0;
     // omega dt of the contact's stiffest pair: 2 cfl, the margin the soil's CFL leaves its
     // stiffest grid mode (central differences are stable to 2), so that the case's cfl
