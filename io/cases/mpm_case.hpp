@@ -111,7 +111,7 @@ struct MpmPileInput {
     PileInput pile;                 // geometry, steel, mesh (the axisymmetric wall)
     double toe_elevation = 0.0;     // m, the toe's elevation in the soil's frame at the start
     double friction = 0.0;          // mu = tan(delta) of the pile-soil interface
-    double penalty_factor = 4.0;    // k_n = factor x M V_p / h_p^2 (coupling/contact/penalty_contact.hpp)
+    double penalty_factor = 4.0;    // k_n = factor x M A_p / h_p^2, A_p the domain's area (coupling/contact/penalty_contact.hpp)
     bool corner_overlap_share = false;  // corner_contact: overlap (else full)
     bool self_weight = true;        // the pile's weight under the case's gravity
     bool wished_in_place = false;   // starts embedded: the soil in its wall removed, overlaps ignored

@@ -340,7 +340,7 @@ MpmCase read_mpm_case(const std::string& file) {
         p.present = true;
         p.toe_elevation = pm->number("toe_elevation", {"the toe's elevation in m", [](double) { return true; }});
         p.friction = pm->number_or("friction", 0.0, non_negative("the interface's friction coefficient tan(delta)"));
-        p.penalty_factor = pm->number_or("penalty_factor", 4.0, in_open_range(0.0, 1000.0, "a penalty factor (k_n h_p^2 / (M V_p))"));
+        p.penalty_factor = pm->number_or("penalty_factor", 4.0, in_open_range(0.0, 1000.0, "a penalty factor (k_n h_p^2 / (M A_p))"));
         p.corner_overlap_share = pm->choice_or("corner_contact", "full", {"full", "overlap"}) == "overlap";
         p.self_weight = pm->boolean_or("self_weight", true);
         p.wished_in_place = pm->boolean_or("wished_in_place", false);
