@@ -72,12 +72,12 @@ public:
     void before_step(mpm::MpmModel<2>& m, int stage, bool quasi_static, double dt, double time_in_stage) override {
         advance(m, dt, stage, quasi_static ? 1e300 : time_in_stage);
     }
-    // At rest, the last blow over (its ENTHRU and hammer gone: a pause records none).
     // The contact's step from the grid the soil's step scattered to (PenaltyContact::grid_stable_time_step).
     void after_step(const mpm::MpmModel<2>& m, const std::vector<mpm::Stencil<2>>& stencils) override {
         if (stencils.size() == m.particles.size())
             contact_dt_ = contact_.grid_stable_time_step(m.grid.mass, stencils, surface_);
     }
+    // At rest, the last blow over (its ENTHRU and hammer gone: a pause records none).
     void come_to_rest() override {
         pile_.stop();
         enthru_ = 0.0, enthru_stage_ = -1;
