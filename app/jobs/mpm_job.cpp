@@ -274,14 +274,6 @@ std::string fingerprint(const io::MpmCase& c) {
            (c.pile.present ? "|pile" : "");
 }
 
-// Checkpoints written before 2026-12-07 hold the case's path as it was typed: compared by
-// its file name too, so the drives running then resume.
-bool same_case(const std::string& stored, const std::string& now) {
-    const auto bar = stored.find('|');
-    if (bar == std::string::npos) return stored == now;
-    return fs::path(stored.substr(0, bar)).filename().string() + stored.substr(bar) == now;
-}
-
 template <int D>
 int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, bool resume) {
     const auto wall0 = std::chrono::steady_clock::now();
@@ -299,7 +291,7 @@ int run_dimension(const io::MpmCase& c, const fs::path& out_dir, bool quiet, boo
             std::fprintf(stderr, "pilempm: resuming from the checkpoint a killed run left in %s\n",
                          staged.adopted_from().c_str());
         restored = io::read_run_checkpoint<D>(file, m.particles);
-        if (!same_case(restored.case_fingerprint, fingerprint(c)))
+        if (restored.case_fingerprint != fingerprint(c))
             throw std::runtime_error("the checkpoint in " + staged.path().string() + " belongs to another case (" +
                                      restored.case_fingerprint.substr(0, restored.case_fingerprint.find('|')) +
                                      "), not to " + c.file);

@@ -69,17 +69,6 @@ void PileRecorder::add_columns(std::vector<std::string>& columns) const {
         columns.push_back(c);
 }
 
-void complete_pile_history(Table& history) {
-    auto index = [&](const char* name) {
-        return static_cast<std::size_t>(std::find(history.columns.begin(), history.columns.end(), name) - history.columns.begin());
-    };
-    const std::size_t shaft = index("shaft_resistance_N"), outer = index("outer_shaft_resistance_N"),
-                      inner = index("inner_shaft_resistance_N");
-    if (std::max({shaft, outer, inner}) >= history.columns.size()) return;
-    for (std::size_t i = 0; i < history.rows(); ++i)
-        if (std::isnan(history.data[shaft][i])) history.data[shaft][i] = history.data[outer][i] + history.data[inner][i];
-}
-
 void PileRecorder::sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>&, std::vector<double>& row) const {
     const auto& t = pile_.contact().totals();
     // Resistance: the soil's force on the pile, up positive.

@@ -15,17 +15,12 @@
 
 namespace pilempm::coupling {
 
-// An earlier build's history rows: shaft_resistance_N (recorded since 2026-12-07), where
-// NaN, from the outer and inner shaft's (nothing when a column is missing).
-void complete_pile_history(Table& history);
-
 class PileRecorder final : public Recorder<2> {
 public:
     // ground_elevation: the seabed in the soil's frame, m (the top of the embedment).
     PileRecorder(const CoupledPile& pile, double ground_elevation) : pile_(pile), ground_(ground_elevation) {}
     void add_columns(std::vector<std::string>& columns) const override;
     void sample(const mpm::MpmModel<2>& m, const mpm::MpmSolver<2>& solver, std::vector<double>& row) const override;
-    void complete(Table& history) const override { complete_pile_history(history); }
 
 private:
     const CoupledPile& pile_;

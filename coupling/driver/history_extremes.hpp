@@ -22,7 +22,7 @@ void add_extremes_row(Table& extremes, int stage, const std::vector<double>& max
 
 // The extremes of a history that stored every row it sampled, for the stages with a number
 // below `before_stage` (1-based; the rest go to `running_max` / `running_min` when given):
-// what a run keeps as it goes, rebuilt for a checkpoint written before it kept them.
+// what a run keeps as it goes, for a history held whole (a blow table's input in tests).
 Table extremes_of_history(const Table& history, int before_stage, std::vector<double>* running_max = nullptr,
                           std::vector<double>* running_min = nullptr);
 

@@ -17,9 +17,6 @@ public:
     virtual ~Recorder() = default;
     virtual void add_columns(std::vector<std::string>& columns) const = 0;
     virtual void sample(const mpm::MpmModel<D>& m, const mpm::MpmSolver<D>& solver, std::vector<double>& row) const = 0;
-    // A resumed run's history, in this run's columns: fills the NaN rows of a column an
-    // earlier build did not record where the columns it did record give it.
-    virtual void complete(Table& /*history*/) const {}
 };
 
 // Kinetic and elastic energy, the energy the absorbing boundaries took out, the unbalanced

@@ -68,24 +68,17 @@ Table with_columns(const Table& t, const std::vector<std::string>& columns) {
 template <int D>
 void StageDriver<D>::resume(const DriverState& state, const mpm::SolverState& solver, Table history) {
     // A checkpoint of an earlier build that recorded fewer columns: its rows go on with the
-    // new columns empty (NaN) up to the resume, or as the recorders derive them, so a long
-    // campaign survives an upgrade.
+    // new columns empty (NaN) up to the resume, so a long campaign survives an upgrade.
+    if (state.extremes.columns.empty())
+        throw std::runtime_error("the checkpoint holds no stages' extremes (written by a pilempm older than commit 11abd81): "
+                                 "rerun the case from its start");
     const std::vector<std::string> recorded = history.columns;
     history_ = with_columns(history, history_.columns);
-    for (const auto& r : recorders_) r->complete(history_);
     state_ = state;
-    if (state.extremes.columns.empty()) {
-        // An earlier build's checkpoint: it stored every row it sampled.
-        state_.extremes = extremes_of_history(history_, state.stage + 1, &state_.stage_max, &state_.stage_min);
-        state_.last_row.clear();
-        if (state.stage_begun && history_.rows() > 0)
-            for (const auto& column : history_.data) state_.last_row.push_back(column.back());
-    } else {
-        state_.extremes = with_columns(state_.extremes, empty_extremes(history_.columns).columns);
-        state_.stage_max = by_column(state_.stage_max, recorded, history_.columns);
-        state_.stage_min = by_column(state_.stage_min, recorded, history_.columns);
-        state_.last_row = by_column(state_.last_row, recorded, history_.columns);
-    }
+    state_.extremes = with_columns(state_.extremes, empty_extremes(history_.columns).columns);
+    state_.stage_max = by_column(state_.stage_max, recorded, history_.columns);
+    state_.stage_min = by_column(state_.stage_min, recorded, history_.columns);
+    state_.last_row = by_column(state_.last_row, recorded, history_.columns);
     solver_.restore(solver);
 }
 

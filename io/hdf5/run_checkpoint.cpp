@@ -63,8 +63,7 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     run.driver.initial_snapshot_written = scalar("initial_snapshot_written") != 0.0;
     run.driver.blow_start_time = scalar("blow_start_time");
     run.driver.blow_start_toe = scalar("blow_start_toe");
-    for (const auto& [key, value] : info.scalars)  // a checkpoint before it: the next set counts from its blow's start
-        if (key == "last_blow_end_toe") run.driver.last_blow_end_toe = value;
+    run.driver.last_blow_end_toe = scalar("last_blow_end_toe");
     run.driver.low_set_blows = static_cast<int>(scalar("low_set_blows"));
     run.driver.rest_since = scalar("rest_since");
     run.solver.absorbed_energy = scalar("absorbed_energy");
@@ -82,7 +81,7 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
     bool have_history = false;
     for (const auto& t : info.extras.tables) {
         if (t.name == "history") run.history = t, have_history = true;
-        if (t.name == "stage_extremes") run.driver.extremes = t;  // none before them: rebuilt from the history
+        if (t.name == "stage_extremes") run.driver.extremes = t;  // none in a run without a stage driver
     }
     if (!have_history) throw std::runtime_error("MPM checkpoint " + file.string() + ": no history table");
     return run;
