@@ -3,25 +3,32 @@
 wished in place, Q_s^f / Q_s^0, for the models of seed 002's Table 2 (Jardine et al. 2013's
 sand, D = 0.8 m, closed-ended):
 
-    shaft_capacity_study.py --out DIR [--size full|reduced] [--models 1,2,...]
-                            [--pilempm build/pilempm] [--threads N]
+    shaft_capacity_study.py --out DIR [--size full|reduced] [--cells-per-diameter N[,N...]]
+                            [--models 1,2,...] [--pilempm build/pilempm] [--threads N] [--check]
 
 Every model is derived from cases/jacking/shaft-capacity.yaml (model 2, jacked): the same
 sand, pile and stages with the model's L/D, phi' and OCR, and its wished-in-place twin
-(toe at L, the soil in the steel removed, a nil step, the same D/30 push). Each run goes to
-DIR/<code>-jacked and DIR/<code>-wished (pilempm run); a complete run of the same case
-there, newer than pilempm and the template, is read, not repeated. --size reduced uses
-cells of D/3 instead of the paper's D/4 (the CI size).
+(toe at L, the soil in the steel removed, a nil step, the same D/30 push); the toe's slip
+line takes the model's phi'. Each run goes to DIR/<code>-D<N>-jacked and
+DIR/<code>-D<N>-wished (pilempm run; N the cells per diameter); a complete run of the same
+case there, newer than pilempm and the template, is read, not repeated. --size reduced uses
+cells of D/3 instead of the paper's D/4; --cells-per-diameter runs each model on each of
+the grids given (a grid sequence).
 
-DIR/shaft_capacity.csv   per model: Q_s^f, Q_s^0, their ratio, and the mean normal
-                         traction on the shaft after the push, jacked over wished.
-DIR/shaft_capacity.png   the ratios per model (the paper's Figure 22) and the shaft's
-                         normal traction against depth, jacked and wished.
+DIR/shaft_capacity.csv   per model and grid: Q_s^f, Q_s^0, their ratio, each over
+                         mu K0 sigma'_v0 A (sigma'_v0 at mid-embedment, A the shaft's area),
+                         and the mean normal traction on the shaft after the push, jacked
+                         over wished.
+DIR/shaft_capacity.png   the ratios per model on the finest grid (the paper's Figure 22), or
+                         against the grid for a sequence, and the shaft's normal traction
+                         against depth on the finest grid, jacked and wished.
 
 The seed's text gives trends, not Figure 22's numbers: the gain is larger for phi' = 40
 than 20 deg and for L/D 5 than 25, OCR hardly matters, and the jacked shaft's radial
 stress averages some 5 times the initial for phi' 40 and 1.5 for phi' 20. --check exits 1
-unless the phi' trend holds at each L/D run (and the L/D trend where both were run).
+unless, on the finest grid, the phi' trend holds at each L/D run (and the L/D trend where
+both were run) and every ratio is above 1, and, for a sequence, each model's ratio on the
+two finest grids differs by less than 10 % of the finest's (converged).
 
 Exit status: 0 success (and trends held with --check), 1 a run failed or a trend did
 not hold, 2 bad input, 3 matplotlib not available.
@@ -29,6 +36,7 @@ not hold, 2 bad input, 3 matplotlib not available.
 import argparse
 import copy
 import csv
+import math
 import os
 import sys
 
@@ -75,6 +83,8 @@ def variant(template, model, jacked, cell):
                  "cells": [nx, ny_soil + ny_above]}
     sand = c["materials"][0]
     sand["friction_angle"], sand["ocr"] = phi, ocr
+    if "toe_slip_line" in c["pile"]:
+        c["pile"]["toe_slip_line"]["friction_angle"] = phi  # the sand's own
     c["regions"][0]["box"] = {"min": [0.0, 0.0], "max": [round(nx * cell, 9), surface]}
     c["initial_stress"]["surface"] = surface
     pile = c["pile"]
@@ -132,54 +142,88 @@ def surface_of(out_dir):
         return yaml.safe_load(f)["initial_stress"]["surface"]
 
 
+def reference_capacity(model):
+    """mu K0 sigma'_v0 A: the shaft's capacity at the soil's initial stress, sigma'_v0 at
+    mid-embedment (the template's unit weight, K0 and mu). N."""
+    with open(TEMPLATE) as f:
+        c = yaml.safe_load(f)
+    sand, length = c["materials"][0], MODELS[model][0] * D
+    gamma = sand["density"] * c["gravity"]
+    return c["pile"]["friction"] * sand["k0"] * gamma * length / 2.0 * math.pi * D * length
+
+
 def study(args):
     with open(TEMPLATE) as f:
         template = yaml.safe_load(f)
-    cell = D / CELLS_PER_D[args.size]
     results = []
     for m in args.models:
-        runs = {}
-        for jacked in (True, False):
-            name = f"{code(m)}-{'jacked' if jacked else 'wished'}"
-            runs[jacked] = run_case(variant(template, m, jacked, cell), os.path.join(args.out, name), args.pilempm,
-                                    args.threads)
-        qf, q0 = shaft_capacity(runs[True]), shaft_capacity(runs[False])
-        top = surface_of(runs[True])
-        tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
-        results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1], "ocr": MODELS[m][2],
-                        "qf": qf, "q0": q0, "ratio": qf / q0, "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top),
-                        "tf": tf, "t0": t0, "top": top})
+        for n in args.cells_per_diameter:
+            runs = {}
+            for jacked in (True, False):
+                name = f"{code(m)}-D{n}-{'jacked' if jacked else 'wished'}"
+                runs[jacked] = run_case(variant(template, m, jacked, D / n), os.path.join(args.out, name),
+                                        args.pilempm, args.threads)
+            qf, q0 = shaft_capacity(runs[True]), shaft_capacity(runs[False])
+            top = surface_of(runs[True])
+            tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
+            results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1],
+                            "ocr": MODELS[m][2], "cells": n, "qf": qf, "q0": q0, "ratio": qf / q0,
+                            "qref": reference_capacity(m),
+                            "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top), "tf": tf, "t0": t0,
+                            "top": top})
     write_table(args.out, results)
-    plot(args.out, results, args.size)
+    plot(args.out, results)
     for r in results:
-        print(f"model {r['model']} ({r['code']}): Q_s^f = {r['qf'] / 1e3:.1f} kN, Q_s^0 = {r['q0'] / 1e3:.1f} kN, "
-              f"ratio {r['ratio']:.2f}; shaft normal traction jacked / wished {r['sigma_ratio']:.2f}")
+        print(f"model {r['model']} ({r['code']}), D/{r['cells']}: Q_s^f = {r['qf'] / 1e3:.1f} kN, "
+              f"Q_s^0 = {r['q0'] / 1e3:.1f} kN, ratio {r['ratio']:.2f}; over mu K0 sigma'_v0 A "
+              f"{r['qf'] / r['qref']:.2f} and {r['q0'] / r['qref']:.2f}; shaft normal traction jacked / wished "
+              f"{r['sigma_ratio']:.2f}")
     return check(results) if args.check else 0
 
 
 def write_table(out_dir, results):
     with open(os.path.join(out_dir, "shaft_capacity.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "Qs_jacked_kN", "Qs_wished_kN", "Qs_ratio",
+        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "Qs_jacked_kN", "Qs_wished_kN",
+                    "Qs_ratio", "Qs_jacked_over_mu_K0_sv0_A", "Qs_wished_over_mu_K0_sv0_A",
                     "shaft_normal_traction_ratio"])
         for r in results:
-            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], f"{r['qf'] / 1e3:.3f}",
-                        f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['sigma_ratio']:.4f}"])
+            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], f"{r['qf'] / 1e3:.3f}",
+                        f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['qf'] / r['qref']:.4f}",
+                        f"{r['q0'] / r['qref']:.4f}", f"{r['sigma_ratio']:.4f}"])
 
 
-def plot(out_dir, results, size):
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5.5))
-    ax1.bar([str(r["model"]) for r in results], [r["ratio"] for r in results], color="tab:blue")
-    for i, r in enumerate(results):
-        ax1.text(i, r["ratio"], f"{r['ratio']:.2f}", ha="center", va="bottom", fontsize=9)
-    ax1.axhline(1.0, color="k", lw=0.8)
-    ax1.set_xlabel("model (Table 2: " + ", ".join(f"{r['model']} = {r['code']}" for r in results) + ")", fontsize=8)
-    ax1.set_ylabel("Q_s^f / Q_s^0")
-    ax1.set_title(f"Shaft capacity, jacked over wished in place (cells of D/{CELLS_PER_D[size]})")
+def finest(results):
+    """Each model's result on its finest grid, in the order the models were run."""
+    best = {}
     for r in results:
+        if r["model"] not in best or r["cells"] > best[r["model"]]["cells"]:
+            best[r["model"]] = r
+    return list(best.values())
+
+
+def plot(out_dir, results):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5.5))
+    top = finest(results)
+    if len({r["cells"] for r in results}) > 1:
+        for m in dict.fromkeys(r["model"] for r in results):
+            seq = sorted((r["cells"], r["ratio"]) for r in results if r["model"] == m)
+            ax1.plot([c for c, _ in seq], [q for _, q in seq], "o-", label=f"model {m} ({code(m)})")
+        ax1.set_xlabel("cells per diameter")
+        ax1.set_title("Shaft capacity, jacked over wished in place, on a grid sequence")
+        ax1.legend(fontsize=8)
+    else:
+        ax1.bar([str(r["model"]) for r in top], [r["ratio"] for r in top], color="tab:blue")
+        for i, r in enumerate(top):
+            ax1.text(i, r["ratio"], f"{r['ratio']:.2f}", ha="center", va="bottom", fontsize=9)
+        ax1.set_xlabel("model (Table 2: " + ", ".join(f"{r['model']} = {r['code']}" for r in top) + ")", fontsize=8)
+        ax1.set_title(f"Shaft capacity, jacked over wished in place (cells of D/{top[0]['cells']})")
+    ax1.axhline(1.0, color="k", lw=0.8)
+    ax1.set_ylabel("Q_s^f / Q_s^0")
+    for r in top:
         for rows, style, label in ((r["tf"], "-", "jacked"), (r["t0"], "--", "wished")):
             pts = sorted((r["top"] - z, s / 1e3) for z, _, s in rows if z < r["top"])
-            ax2.plot([s for _, s in pts], [d for d, _ in pts], style, label=f"{r['code']} {label}")
+            ax2.plot([s for _, s in pts], [d for d, _ in pts], style, label=f"{r['code']} D/{r['cells']} {label}")
     ax2.invert_yaxis()
     ax2.set_xlabel("normal traction on the shaft after the push (kPa)")
     ax2.set_ylabel("depth (m)")
@@ -188,8 +232,10 @@ def plot(out_dir, results, size):
 
 
 def check(results):
-    """The seed's trends: phi' 40 gains more than 20 at each L/D; L/D 5 more than 25."""
-    by = {(r["ld"], r["phi"], r["ocr"]): r["ratio"] for r in results}
+    """The seed's trends on the finest grid: phi' 40 gains more than 20 at each L/D; L/D 5
+    more than 25; jacking raises every shaft's capacity. A sequence must have converged."""
+    top = finest(results)
+    by = {(r["ld"], r["phi"], r["ocr"]): r["ratio"] for r in top}
     failed = []
     for ld in (5, 25):
         if (ld, 20.0, 1.0) in by and (ld, 40.0, 1.0) in by and not by[(ld, 40.0, 1.0)] > by[(ld, 20.0, 1.0)]:
@@ -197,9 +243,13 @@ def check(results):
     for phi in (20.0, 40.0):
         if (5, phi, 1.0) in by and (25, phi, 1.0) in by and not by[(5, phi, 1.0)] > by[(25, phi, 1.0)]:
             failed.append(f"phi' {phi:g}: L/D 5 ratio {by[(5, phi, 1.0)]:.2f} not above L/D 25's {by[(25, phi, 1.0)]:.2f}")
-    for r in results:
+    for r in top:
         if not r["ratio"] > 1.0:
             failed.append(f"model {r['model']}: jacking lowered the shaft capacity (ratio {r['ratio']:.2f})")
+        seq = sorted((q["cells"], q["ratio"]) for q in results if q["model"] == r["model"])
+        if len(seq) > 1 and not abs(seq[-1][1] - seq[-2][1]) < 0.1 * abs(seq[-1][1]):
+            failed.append(f"model {r['model']}: not converged, ratio {seq[-2][1]:.2f} on D/{seq[-2][0]} and "
+                          f"{seq[-1][1]:.2f} on D/{seq[-1][0]}")
     return study_runs.trends_status(failed)
 
 
@@ -207,6 +257,7 @@ def main():
     ap = argparse.ArgumentParser(description="Validation 3: Q_s^f / Q_s^0 of seed 002's Table 2")
     ap.add_argument("--out", required=True)
     ap.add_argument("--size", choices=("full", "reduced"), default="full")
+    ap.add_argument("--cells-per-diameter", help="grids, e.g. 3,4,6 (default: --size's)")
     ap.add_argument("--models", default="1,2,3,4,5,6")
     ap.add_argument("--pilempm", default=os.path.join(ROOT, "build", "pilempm"))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
@@ -219,6 +270,13 @@ def main():
     bad = [m for m in args.models if m not in MODELS]
     if bad:
         raise InputError(f"--models: no model {bad[0]} in Table 2 (1-6)")
+    cells = args.cells_per_diameter or str(CELLS_PER_D[args.size])
+    try:
+        args.cells_per_diameter = sorted({int(n) for n in cells.split(",")})
+    except ValueError:
+        args.cells_per_diameter = [0]
+    if min(args.cells_per_diameter) < 1:
+        raise InputError(f"--cells-per-diameter: expected whole numbers of at least 1 separated by commas, got '{cells}'")
     return study(args)
 
 
