@@ -78,12 +78,15 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& file, mpm::Partic
         if (name == "driver_last_row") run.driver.last_row = values;
         if (name.rfind(kBodyPrefix, 0) == 0) run.body.emplace_back(name.substr(kBodyPrefix.size()), values);
     }
-    bool have_history = false;
+    bool have_history = false, have_extremes = false;
     for (const auto& t : info.extras.tables) {
         if (t.name == "history") run.history = t, have_history = true;
-        if (t.name == "stage_extremes") run.driver.extremes = t;  // none in a run without a stage driver
+        if (t.name == "stage_extremes") run.driver.extremes = t, have_extremes = true;
     }
     if (!have_history) throw std::runtime_error("MPM checkpoint " + file.string() + ": no history table");
+    if (!have_extremes)
+        throw std::runtime_error("MPM checkpoint " + file.string() +
+                                 ": no stage_extremes table (written by a pilempm older than commit 11abd81?)");
     return run;
 }
 

@@ -98,9 +98,10 @@ TEST(RunCheckpoint, TheDriversStateComesBackExactly) {
     fs::remove(file);
 }
 
-// Written before the drive kept where its last blow left the toe: refused, naming what it
-// lacks, as a resumed drive would count its next set from another place.
-TEST(RunCheckpoint, OneFromBeforeTheLastBlowsEndIsRefusedNamingIt) {
+// Written before the drive kept where its last blow left the toe, or before it kept the
+// stages' extremes: refused, naming what it lacks (a resumed drive would count its next set
+// from another place, or lose the peaks of the blows before the resume).
+TEST(RunCheckpoint, OneFromBeforeTheLastBlowsEndOrTheExtremesIsRefusedNamingIt) {
     const fs::path file = scratch_file("older");
     const io::RunCheckpoint run = sample_run();
     const auto& s = run.driver;
@@ -119,6 +120,15 @@ TEST(RunCheckpoint, OneFromBeforeTheLastBlowsEndIsRefusedNamingIt) {
         ADD_FAILURE() << "read without last_blow_end_toe";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("last_blow_end_toe"), std::string::npos) << e.what();
+    }
+    std::vector<std::pair<std::string, double>> with_toe = older;
+    with_toe.emplace_back("last_blow_end_toe", s.last_blow_end_toe);
+    io::write_checkpoint<2>(file, two_points(), 1.0, 10, with_toe, "case", extras);
+    try {
+        io::read_run_checkpoint<2>(file, q);
+        ADD_FAILURE() << "read without the stages' extremes";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("stage_extremes"), std::string::npos) << e.what();
     }
     fs::remove(file);
 }
