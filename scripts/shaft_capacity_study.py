@@ -142,11 +142,9 @@ def surface_of(out_dir):
         return yaml.safe_load(f)["initial_stress"]["surface"]
 
 
-def reference_capacity(model):
+def reference_capacity(c, model):
     """mu K0 sigma'_v0 A: the shaft's capacity at the soil's initial stress, sigma'_v0 at
-    mid-embedment (the template's unit weight, K0 and mu). N."""
-    with open(TEMPLATE) as f:
-        c = yaml.safe_load(f)
+    mid-embedment (the case `c`'s unit weight, K0 and mu). N."""
     sand, length = c["materials"][0], MODELS[model][0] * D
     gamma = sand["density"] * c["gravity"]
     return c["pile"]["friction"] * sand["k0"] * gamma * length / 2.0 * math.pi * D * length
@@ -168,7 +166,7 @@ def study(args):
             tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
             results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1],
                             "ocr": MODELS[m][2], "cells": n, "qf": qf, "q0": q0, "ratio": qf / q0,
-                            "qref": reference_capacity(m),
+                            "qref": reference_capacity(template, m),
                             "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top), "tf": tf, "t0": t0,
                             "top": top})
     write_table(args.out, results)

@@ -67,11 +67,13 @@ Table with_columns(const Table& t, const std::vector<std::string>& columns) {
 
 template <int D>
 void StageDriver<D>::resume(const DriverState& state, const mpm::SolverState& solver, Table history) {
-    // A checkpoint of an earlier build that recorded fewer columns: its rows go on with the
-    // new columns empty (NaN) up to the resume, so a long campaign survives an upgrade.
+    // `pilempm run` refuses such a checkpoint where it reads it, before the output folder is
+    // touched; this guards the library's other callers, whose state may be built in memory.
     if (state.extremes.columns.empty())
         throw std::runtime_error("the checkpoint holds no stages' extremes (written by a pilempm older than commit 11abd81): "
                                  "rerun the case from its start");
+    // A checkpoint of an earlier build that recorded fewer columns: its rows go on with the
+    // new columns empty (NaN) up to the resume, so a long campaign survives an upgrade.
     const std::vector<std::string> recorded = history.columns;
     history_ = with_columns(history, history_.columns);
     state_ = state;
