@@ -13,13 +13,24 @@ mini_icp_comparison.csv      per probe: initial, peak and final radial stress (r
                              the volumetric strain at the end; then the shaft profile
                              over ICP-05 at h / R = 2, 5, 10, 20.
 
-Exit status: 0 success, 2 missing/malformed input, 3 matplotlib not available.
+--check tests the paper's findings, each with the tolerance it states, and exits 1 when one
+does not hold: at each sensor depth the radial stress peaks higher the nearer the shaft
+(r/R 2 above 3 above 8); the largest peak at r/R = 2 within a factor of 2 of 25 times the
+initial; at the end of installation the radial stress at r/R = 2 within a factor of 2 of
+3.5 times the initial (its largest over the depths) and K there between 1 and 4 K0 (the
+paper: up to 2 K0); a net dilation at r/R = 3 (the paper: about +12 %), its largest over
+the depths between +6 and +24 %; and the shaft's radial stress after installation within
+a factor of 2 of ICP-05 in the mean over h/R = 2, 5, 10, 20.
+
+Exit status: 0 success (and the findings held with --check), 1 a finding did not hold,
+2 missing/malformed input, 3 matplotlib not available.
 """
+import argparse
 import csv
 import os
 import sys
 
-from plot_common import InputError, read_columns, require_matplotlib, run_main  # noqa: E402
+from plot_common import InputError, read_columns, require_matplotlib  # noqa: E402
 
 plt = require_matplotlib(__file__)
 
@@ -116,14 +127,69 @@ def write_table(out_dir, probes, profile):
                 w.writerow([h, f"{s / 1e3:.2f}", f"{icp05(h) / 1e3:.2f}", f"{s / icp05(h):.3f}"])
 
 
-def compare(out_dir):
+def within_factor(value, reference, factor):
+    return reference / factor <= value <= reference * factor
+
+
+def check(probes, profile):
+    """The paper's findings (module docstring) that this run misses, as lines; none when all hold."""
+    failed = []
+    peak = {(p["depth_mm"], p["r_over_R"]): max(p["sr"]) / p["sr"][0] for p in probes}
+    for depth in DEPTHS:
+        near, mid, far = (peak[(depth, r)] for r in RADII)
+        if not near > mid > far:
+            failed.append(f"z = {depth} mm: peaks {near:.2f}, {mid:.2f}, {far:.2f} times the initial at r/R = "
+                          f"{RADII}, not falling outward")
+    near = [p for p in probes if p["r_over_R"] == RADII[0]]
+    largest = max(peak[(p["depth_mm"], RADII[0])] for p in near)
+    if not within_factor(largest, 25.0, 2.0):
+        failed.append(f"largest peak at r/R = 2: {largest:.2f} times the initial, the paper up to 25 (factor 2)")
+    kept = max(p["sr"][-1] / p["sr"][0] for p in near)
+    if not within_factor(kept, 3.5, 2.0):
+        failed.append(f"radial stress at r/R = 2 after installation: at most {kept:.2f} times the initial, "
+                      f"the paper up to 3.5 (factor 2)")
+    k_end = max(p["sr"][-1] / p["sv"][-1] / K0 for p in near)
+    if not 1.0 <= k_end <= 4.0:
+        failed.append(f"K at r/R = 2 after installation: at most {k_end:.2f} K0, expected 1 to 4 (the paper up to 2)")
+    dilation = max(100.0 * p["ev"][-1] for p in probes if p["r_over_R"] == RADII[1])
+    if not 6.0 <= dilation <= 24.0:
+        failed.append(f"volumetric strain at r/R = 3 after installation: at most {dilation:+.1f} %, "
+                      f"the paper about +12 % (6 to 24)")
+    ratios = [at(profile, h) / icp05(h) for h in (2.0, 5.0, 10.0, 20.0) if at(profile, h) is not None]
+    if not ratios:
+        failed.append("no shaft segment within 1 R of h/R = 2, 5, 10 or 20")
+    elif not within_factor(sum(ratios) / len(ratios), 1.0, 2.0):
+        failed.append(f"shaft radial stress after installation: {sum(ratios) / len(ratios):.3f} of ICP-05 in the "
+                      f"mean over h/R = 2-20 (factor 2)")
+    return failed
+
+
+def compare(out_dir, with_check):
     radius, probes = read_probes(out_dir)
     profile = shaft_profile(out_dir, radius)
     plot_radial_stress(out_dir, probes)
     plot_shaft(out_dir, profile)
     write_table(out_dir, probes, profile)
-    return 0
+    if not with_check:
+        return 0
+    failed = check(probes, profile)
+    for line in failed:
+        print(f"not as the paper: {line}")
+    print("the paper's findings hold" if not failed else f"{len(failed)} of the paper's findings do not hold")
+    return 1 if failed else 0
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="compare_mini_icp.py", description=__doc__.splitlines()[0])
+    parser.add_argument("out_dir", help="a run of cases/jacking/mini-icp.yaml (or a variant with its probes)")
+    parser.add_argument("--check", action="store_true", help="exit 1 unless the paper's findings hold")
+    args = parser.parse_args(argv[1:])
+    try:
+        return compare(args.out_dir, args.check)
+    except (OSError, ValueError, KeyError, InputError) as e:
+        print(f"compare_mini_icp.py: {e}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":
-    sys.exit(run_main("compare_mini_icp.py", sys.argv, compare))
+    sys.exit(main(sys.argv))

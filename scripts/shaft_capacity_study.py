@@ -4,7 +4,8 @@ wished in place, Q_s^f / Q_s^0, for the models of seed 002's Table 2 (Jardine et
 sand, D = 0.8 m, closed-ended):
 
     shaft_capacity_study.py --out DIR [--size full|reduced] [--cells-per-diameter N[,N...]]
-                            [--models 1,2,...] [--pilempm build/pilempm] [--threads N] [--check]
+                            [--models 1,2,...] [--jack-velocity V] [--pilempm build/pilempm]
+                            [--threads N] [--check]
 
 Every model is derived from cases/jacking/shaft-capacity.yaml (model 2, jacked): the same
 sand, pile and stages with the model's L/D, phi' and OCR, and its wished-in-place twin
@@ -13,7 +14,8 @@ line takes the model's phi'. Each run goes to DIR/<code>-D<N>-jacked and
 DIR/<code>-D<N>-wished (pilempm run; N the cells per diameter); a complete run of the same
 case there, newer than pilempm and the template, is read, not repeated. --size reduced uses
 cells of D/3 instead of the paper's D/4; --cells-per-diameter runs each model on each of
-the grids given (a grid sequence).
+the grids given (a grid sequence). --jack-velocity jacks at V m/s instead of 1 (the push
+stays at 1 m/s; runs go to DIR/<code>-D<N>-jack<V>-jacked), to see what the rate does.
 
 DIR/shaft_capacity.csv   per model and grid: Q_s^f, Q_s^0, their ratio, each over
                          mu K0 sigma'_v0 A (sigma'_v0 at mid-embedment, A the shaft's area),
@@ -55,7 +57,7 @@ WIDTH = 15.0 * D            # the domain: r / R = 30
 BELOW_TOE = 10.0 * D        # sand below the toe's final depth
 ABOVE = 2.0 * D             # empty grid above the surface (heave)
 HEAD_ABOVE = 1.5 * D        # pile above the surface at the end
-VELOCITY = 1.0              # m/s, jacking and the push
+VELOCITY = 1.0              # m/s, the push, and jacking unless --jack-velocity says otherwise
 RISE = 0.02                 # s
 PUSH = D / 30.0             # m, the push that mobilises the shaft
 CELLS_PER_D = {"full": 4, "reduced": 3}   # the paper's D/4; D/3 in CI
@@ -69,8 +71,8 @@ def code(model):
     return f"{ld}-{phi:g}-{ocr:g}"
 
 
-def variant(template, model, jacked, cell):
-    """The case of `model` (jacked, or wished in place) on cells of `cell` metres."""
+def variant(template, model, jacked, cell, jack_velocity=VELOCITY):
+    """The case of `model` (jacked at `jack_velocity` m/s, or wished in place) on cells of `cell` metres."""
     ld, phi, ocr = MODELS[model]
     c = copy.deepcopy(template)
     length = ld * D
@@ -95,10 +97,10 @@ def variant(template, model, jacked, cell):
     push["pile"] = {"velocity": VELOCITY, "rise_time": RISE}
     if jacked:
         pile["toe_elevation"] = surface
-        jack = dict(by_name["jack"], duration=length / VELOCITY + RISE / 2.0)
-        jack["pile"] = {"velocity": VELOCITY, "rise_time": RISE}
+        jack = dict(by_name["jack"], duration=length / jack_velocity + RISE / 2.0)
+        jack["pile"] = {"velocity": jack_velocity, "rise_time": RISE}
         c["stages"] = [by_name["geostatic"], jack, by_name["hold"], push]
-        c["output"]["snapshot_interval"] = length / VELOCITY / 16.0
+        c["output"]["snapshot_interval"] = length / jack_velocity / 16.0
     else:
         pile["toe_elevation"] = surface - length
         pile["wished_in_place"] = True
@@ -158,14 +160,16 @@ def study(args):
         for n in args.cells_per_diameter:
             runs = {}
             for jacked in (True, False):
-                name = f"{code(m)}-D{n}-{'jacked' if jacked else 'wished'}"
-                runs[jacked] = run_case(variant(template, m, jacked, D / n), os.path.join(args.out, name),
+                rate = f"-jack{args.jack_velocity:g}" if jacked and args.jack_velocity != VELOCITY else ""
+                name = f"{code(m)}-D{n}{rate}-{'jacked' if jacked else 'wished'}"
+                runs[jacked] = run_case(variant(template, m, jacked, D / n, args.jack_velocity),
+                                        os.path.join(args.out, name),
                                         args.pilempm, args.threads)
             qf, q0 = shaft_capacity(runs[True]), shaft_capacity(runs[False])
             top = surface_of(runs[True])
             tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
             results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1],
-                            "ocr": MODELS[m][2], "cells": n, "qf": qf, "q0": q0, "ratio": qf / q0,
+                            "ocr": MODELS[m][2], "cells": n, "jack_velocity": args.jack_velocity, "qf": qf, "q0": q0, "ratio": qf / q0,
                             "qref": reference_capacity(template, m),
                             "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top), "tf": tf, "t0": t0,
                             "top": top})
@@ -182,12 +186,12 @@ def study(args):
 def write_table(out_dir, results):
     with open(os.path.join(out_dir, "shaft_capacity.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "Qs_jacked_kN", "Qs_wished_kN",
+        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "jack_velocity_m_s", "Qs_jacked_kN", "Qs_wished_kN",
                     "Qs_ratio", "Qs_jacked_over_mu_K0_sv0_A", "Qs_wished_over_mu_K0_sv0_A",
                     "shaft_normal_traction_ratio"])
         for r in results:
-            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], f"{r['qf'] / 1e3:.3f}",
-                        f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['qf'] / r['qref']:.4f}",
+            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], r["jack_velocity"],
+                        f"{r['qf'] / 1e3:.3f}", f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['qf'] / r['qref']:.4f}",
                         f"{r['q0'] / r['qref']:.4f}", f"{r['sigma_ratio']:.4f}"])
 
 
@@ -259,8 +263,12 @@ def main():
     ap.add_argument("--models", default="1,2,3,4,5,6")
     ap.add_argument("--pilempm", default=os.path.join(ROOT, "build", "pilempm"))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--jack-velocity", type=float, default=VELOCITY,
+                    help="m/s, the jacking rate (default 1; the push stays at 1 m/s)")
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
+    if not args.jack_velocity > 0.0:
+        raise InputError(f"--jack-velocity: expected a rate above 0 m/s, got {args.jack_velocity}")
     try:
         args.models = [int(m) for m in args.models.split(",")]
     except ValueError:

@@ -69,6 +69,14 @@ function(pilempm_shaft_capacity_test name cells models label)
 endfunction()
 pilempm_shaft_capacity_test(long_shaft_capacity 4 1,2,3,4,5,6 long)
 pilempm_shaft_capacity_test(long_shaft_capacity_sequence 4,6,8 1,2 long)
+# Validation 1 (issue 13): the mini-ICP of seed 002 at the paper's resolution (44 756 points;
+# some 2 h 20 min on two threads), against the paper's findings and ICP-05
+# (compare_mini_icp.py --check): label long.
+add_test(NAME long_mini_icp
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:pilempm> -DCASE=${PROJECT_SOURCE_DIR}/cases/jacking/mini-icp.yaml
+          -DSCRIPT=${PROJECT_SOURCE_DIR}/scripts/compare_mini_icp.py -DARGS=--check
+          -DOUT=${CMAKE_BINARY_DIR}/test-output/long_mini_icp -P ${CMAKE_CURRENT_SOURCE_DIR}/run_case_then_script.cmake)
+set_tests_properties(long_mini_icp PROPERTIES LABELS long TIMEOUT 36000)
 # Validation 2 (issue 13): seed 000's centrifuge pile (Huy 2008) jacked at 40 g and
 # load-tested, with and without installation, against NEN 9997-1's base settlement lines and
 # the seed's trends. CI: Mohr-Coulomb in medium-dense sand on cells of D/2 in a cut
