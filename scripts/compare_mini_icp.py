@@ -155,7 +155,8 @@ def check(probes, profile):
     if not 6.0 <= dilation <= 24.0:
         failed.append(f"volumetric strain at r/R = 3 after installation: at most {dilation:+.1f} %, "
                       f"the paper about +12 % (6 to 24)")
-    ratios = [at(profile, h) / icp05(h) for h in (2.0, 5.0, 10.0, 20.0) if at(profile, h) is not None]
+    shaft = {h: at(profile, h) for h in (2.0, 5.0, 10.0, 20.0)}
+    ratios = [s / icp05(h) for h, s in shaft.items() if s is not None]
     if not ratios:
         failed.append("no shaft segment within 1 R of h/R = 2, 5, 10 or 20")
     elif not within_factor(sum(ratios) / len(ratios), 1.0, 2.0):
