@@ -82,9 +82,11 @@ def plot_radial_stress(out_dir, probes):
 
 
 def shaft_profile(out_dir, radius):
-    t = read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"),
-                     ["height_above_toe_m", "normal_traction_compression_Pa"])
-    return [(h / radius, s) for h, s in zip(t["height_above_toe_m"], t["normal_traction_compression_Pa"]) if h > 0.0]
+    # The mean over the last stage (the hold): a chattering contact's last step alternates
+    # between segments that bear all and none.
+    column = "stage_mean_normal_traction_compression_Pa"
+    t = read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"), ["height_above_toe_m", column])
+    return [(h / radius, s) for h, s in zip(t["height_above_toe_m"], t[column]) if h > 0.0]
 
 
 def at(profile, h_over_r):

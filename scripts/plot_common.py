@@ -13,7 +13,7 @@ _SYSTEM_PYTHON = "/usr/bin/python3"
 
 
 def require_matplotlib(script):
-    """Returns matplotlib.pyplot, or re-runs `script` under the system python, or exits 3."""
+    """Returns matplotlib.pyplot, or re-runs the invoked script under the system python, or exits 3."""
     try:
         import matplotlib
 
@@ -28,7 +28,8 @@ def require_matplotlib(script):
             and os.path.realpath(sys.executable) != os.path.realpath(_SYSTEM_PYTHON)
         ):
             os.environ[_REEXEC_GUARD] = "1"
-            os.execv(_SYSTEM_PYTHON, [_SYSTEM_PYTHON, os.path.abspath(script)] + sys.argv[1:])
+            # What was run (a test importing the script, or the script itself), not the module.
+            os.execv(_SYSTEM_PYTHON, [_SYSTEM_PYTHON, os.path.abspath(sys.argv[0])] + sys.argv[1:])
         print(f"{os.path.basename(script)}: matplotlib not available, no plots written", file=sys.stderr)
         sys.exit(3)
 

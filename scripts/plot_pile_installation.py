@@ -52,15 +52,20 @@ def plot_load_settlement(out_dir):
 
 def plot_tractions(out_dir):
     fig, axes = plt.subplots(1, 2, figsize=(9, 6), sharey=True)
-    names = ["elevation_m", "normal_traction_compression_Pa", "shear_traction_Pa"]
-    for side, style in (("outer", "-"), ("inner", "--")):
+    names = ["elevation_m", "normal_traction_compression_Pa", "shear_traction_Pa",
+             "stage_mean_normal_traction_compression_Pa", "stage_mean_shear_traction_Pa"]
+    for side, style, colour in (("outer", "-", "C0"), ("inner", "--", "C1")):
         path = os.path.join(out_dir, f"pile_tractions_{side}.csv")
         with open(path) as f:
             if sum(1 for _ in f) < 2:  # a closed-ended pile has no inner shaft
                 continue
         t = read_columns(path, names)
-        axes[0].plot([v / 1e3 for v in t["normal_traction_compression_Pa"]], t["elevation_m"], style, label=side)
-        axes[1].plot([v / 1e3 for v in t["shear_traction_Pa"]], t["elevation_m"], style, label=side)
+        # The last stage's mean bold, its last step faint (a chattering contact's on-off).
+        for k, column in enumerate(("normal_traction_compression_Pa", "shear_traction_Pa")):
+            last, mean = t[column], t["stage_mean_" + column]
+            axes[k].plot([v / 1e3 for v in last], t["elevation_m"], style, color=colour, alpha=0.3, lw=0.8,
+                         label=f"{side}, last step")
+            axes[k].plot([v / 1e3 for v in mean], t["elevation_m"], style, color=colour, label=f"{side}, last stage's mean")
     axes[0].set_xlabel("Normal traction (kPa), compression +")
     axes[1].set_xlabel("Shear traction (kPa), up +")
     axes[0].set_ylabel("Elevation (m)")

@@ -4,8 +4,8 @@ wished in place, Q_s^f / Q_s^0, for the models of seed 002's Table 2 (Jardine et
 sand, D = 0.8 m, closed-ended):
 
     shaft_capacity_study.py --out DIR [--size full|reduced] [--cells-per-diameter N[,N...]]
-                            [--models 1,2,...] [--jack-velocity V] [--pilempm build/pilempm]
-                            [--threads N] [--check]
+                            [--models 1,2,...] [--jack-velocity V] [--slip-friction-angle A]
+                            [--pilempm build/pilempm] [--threads N] [--check]
 
 Every model is derived from cases/jacking/shaft-capacity.yaml (model 2, jacked): the same
 sand, pile and stages with the model's L/D, phi' and OCR, and its wished-in-place twin
@@ -16,6 +16,9 @@ case there, newer than pilempm and the template, is read, not repeated. --size r
 cells of D/3 instead of the paper's D/4; --cells-per-diameter runs each model on each of
 the grids given (a grid sequence). --jack-velocity jacks at V m/s instead of 1 (the push
 stays at 1 m/s; runs go to DIR/<code>-D<N>-jack<V>-jacked), to see what the rate does.
+--slip-friction-angle sets the toe slip line's friction angle to A degrees in every model
+instead of the model's phi' (runs go to DIR/<code>-D<N>-slip<A>-...), to see what the
+slip line, a numerical device, does to the phi' trend.
 
 DIR/shaft_capacity.csv   per model and grid: Q_s^f, Q_s^0, their ratio, each over
                          mu K0 sigma'_v0 A (sigma'_v0 at mid-embedment, A the shaft's area),
@@ -71,8 +74,9 @@ def code(model):
     return f"{ld}-{phi:g}-{ocr:g}"
 
 
-def variant(template, model, jacked, cell, jack_velocity=VELOCITY):
-    """The case of `model` (jacked at `jack_velocity` m/s, or wished in place) on cells of `cell` metres."""
+def variant(template, model, jacked, cell, jack_velocity=VELOCITY, slip_angle=None):
+    """The case of `model` (jacked at `jack_velocity` m/s, or wished in place) on cells of `cell`
+    metres, its toe's slip line at `slip_angle` degrees (None: the model's phi')."""
     ld, phi, ocr = MODELS[model]
     c = copy.deepcopy(template)
     length = ld * D
@@ -86,7 +90,8 @@ def variant(template, model, jacked, cell, jack_velocity=VELOCITY):
     sand = c["materials"][0]
     sand["friction_angle"], sand["ocr"] = phi, ocr
     if "toe_slip_line" in c["pile"]:
-        c["pile"]["toe_slip_line"]["friction_angle"] = phi  # the sand's own
+        # The sand's own phi' unless a study sets it.
+        c["pile"]["toe_slip_line"]["friction_angle"] = phi if slip_angle is None else slip_angle
     c["regions"][0]["box"] = {"min": [0.0, 0.0], "max": [round(nx * cell, 9), surface]}
     c["initial_stress"]["surface"] = surface
     pile = c["pile"]
@@ -127,9 +132,9 @@ def shaft_capacity(out_dir):
 
 
 def shaft_tractions(out_dir):
-    t = read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"),
-                     ["elevation_m", "length_m", "normal_traction_compression_Pa"])
-    return list(zip(t["elevation_m"], t["length_m"], t["normal_traction_compression_Pa"]))
+    column = "stage_mean_normal_traction_compression_Pa"  # over the push, not its last step
+    t = read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"), ["elevation_m", "length_m", column])
+    return list(zip(t["elevation_m"], t["length_m"], t[column]))
 
 
 def mean_traction(rows, top):
@@ -161,15 +166,17 @@ def study(args):
             runs = {}
             for jacked in (True, False):
                 rate = f"-jack{args.jack_velocity:g}" if jacked and args.jack_velocity != VELOCITY else ""
-                name = f"{code(m)}-D{n}{rate}-{'jacked' if jacked else 'wished'}"
-                runs[jacked] = run_case(variant(template, m, jacked, D / n, args.jack_velocity),
+                slip = "" if args.slip_friction_angle is None else f"-slip{args.slip_friction_angle:g}"
+                name = f"{code(m)}-D{n}{slip}{rate}-{'jacked' if jacked else 'wished'}"
+                runs[jacked] = run_case(variant(template, m, jacked, D / n, args.jack_velocity, args.slip_friction_angle),
                                         os.path.join(args.out, name),
                                         args.pilempm, args.threads)
             qf, q0 = shaft_capacity(runs[True]), shaft_capacity(runs[False])
             top = surface_of(runs[True])
             tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
             results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1],
-                            "ocr": MODELS[m][2], "cells": n, "jack_velocity": args.jack_velocity, "qf": qf, "q0": q0, "ratio": qf / q0,
+                            "ocr": MODELS[m][2], "cells": n, "jack_velocity": args.jack_velocity,
+                            "slip_angle": MODELS[m][1] if args.slip_friction_angle is None else args.slip_friction_angle, "qf": qf, "q0": q0, "ratio": qf / q0,
                             "qref": reference_capacity(template, m),
                             "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top), "tf": tf, "t0": t0,
                             "top": top})
@@ -186,11 +193,11 @@ def study(args):
 def write_table(out_dir, results):
     with open(os.path.join(out_dir, "shaft_capacity.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "jack_velocity_m_s", "Qs_jacked_kN", "Qs_wished_kN",
+        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "jack_velocity_m_s", "slip_line_friction_angle_deg", "Qs_jacked_kN", "Qs_wished_kN",
                     "Qs_ratio", "Qs_jacked_over_mu_K0_sv0_A", "Qs_wished_over_mu_K0_sv0_A",
                     "shaft_normal_traction_ratio"])
         for r in results:
-            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], r["jack_velocity"],
+            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], r["jack_velocity"], r["slip_angle"],
                         f"{r['qf'] / 1e3:.3f}", f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['qf'] / r['qref']:.4f}",
                         f"{r['q0'] / r['qref']:.4f}", f"{r['sigma_ratio']:.4f}"])
 
@@ -265,10 +272,14 @@ def main():
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--jack-velocity", type=float, default=VELOCITY,
                     help="m/s, the jacking rate (default 1; the push stays at 1 m/s)")
+    ap.add_argument("--slip-friction-angle", type=float,
+                    help="degrees, the toe slip line's friction angle in every model (default: the model's phi')")
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
     if not args.jack_velocity > 0.0:
         raise InputError(f"--jack-velocity: expected a rate above 0 m/s, got {args.jack_velocity}")
+    if args.slip_friction_angle is not None and not 0.0 <= args.slip_friction_angle < 90.0:
+        raise InputError(f"--slip-friction-angle: expected degrees in [0, 90), got {args.slip_friction_angle}")
     try:
         args.models = [int(m) for m in args.models.split(",")]
     except ValueError:

@@ -65,6 +65,10 @@ void CoupledPile::advance(mpm::MpmModel<2>& m, double dt, int stage, double time
         }
     }
     contact_.compute(m.particles, m.shape, surface_, dt, m.materials);
+    const auto& segment_force = contact_.segment_force();
+    if (stage != mean_stage_) mean_stage_ = stage, stage_time_ = 0.0, stage_impulse_.assign(segment_force.size(), 0.0);
+    for (std::size_t k = 0; k < segment_force.size(); ++k) stage_impulse_[k] += segment_force[k] * dt;
+    stage_time_ += dt;
     // The steel is impermeable: the pore water does not cross the surface the soil touches.
     m.water_walls.clear();
     if (m.grid.water)
@@ -193,6 +197,13 @@ void CoupledPile::follow_soil(const mpm::MpmModel<2>& m, const std::vector<doubl
     place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);
 }
 
+std::vector<double> CoupledPile::stage_mean_segment_force() const {
+    std::vector<double> mean(stage_impulse_.size(), 0.0);
+    if (stage_time_ > 0.0)
+        for (std::size_t k = 0; k < mean.size(); ++k) mean[k] = stage_impulse_[k] / stage_time_;
+    return mean;
+}
+
 double CoupledPile::max_speed() const {
     const auto& v = pile_.velocity();
     double fastest = 0.0;
@@ -221,6 +232,9 @@ std::vector<std::pair<std::string, std::vector<double>>> CoupledPile::state() co
             {"pile_enthru", {enthru_, static_cast<double>(enthru_stage_)}},
             {"hammer_chain", chain_ ? chain_->state() : std::vector<double>{}},
             {"contact_time_step", {contact_dt_}}};
+    std::vector<double> mean = {static_cast<double>(mean_stage_), stage_time_};
+    mean.insert(mean.end(), stage_impulse_.begin(), stage_impulse_.end());
+    out.push_back({"contact_stage_impulse", std::move(mean)});
     for (auto& entry : contact_.outputs()) out.push_back(std::move(entry));
     return out;
 }
@@ -255,6 +269,15 @@ void CoupledPile::restore(const std::vector<std::pair<std::string, std::vector<d
     if (has("contact_totals"))
         contact_.restore_outputs(find("contact_nodal_force"), find("contact_segment_force"), find("contact_totals"),
                                  find("contact_touches"));
+    // The stage's segment impulse so far (checkpoints before 2026-12-07 lack it: the mean
+    // then starts at the resumed step).
+    mean_stage_ = -1, stage_time_ = 0.0, stage_impulse_.clear();
+    if (has("contact_stage_impulse")) {
+        const auto& mean = find("contact_stage_impulse");
+        mean_stage_ = static_cast<int>(mean.at(0));
+        stage_time_ = mean.at(1);
+        stage_impulse_.assign(mean.begin() + 2, mean.end());
+    }
     // The surface where the restored pile is: a run resumed in a pause records its toe from
     // it before any step places it (it recorded the toe at 0 m).
     place_pile_surface(surface_, pile_.mesh(), pile_.displacement(), pile_.velocity(), frame_);

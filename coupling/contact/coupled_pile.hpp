@@ -96,6 +96,12 @@ public:
     fem::ExplicitPile& pile() { return pile_; }
     const fem::ExplicitPile& pile() const { return pile_; }
     const PenaltyContact& contact() const { return contact_; }
+    // The mean force on each surface segment (2 per segment, N, the master's measure) over
+    // the last stage the pile stepped in: its impulse over the stage's time. A contact that
+    // chatters puts the whole load on a segment one step and none the next; the mean is what
+    // the soil bore there (a traction profile to compare with measured ones).
+    std::vector<double> stage_mean_segment_force() const;
+    double stage_time() const { return stage_time_; }  // s (pseudo-time in a quasi-static stage)
     const ContactSurface& surface() const { return surface_; }
     const PileFrame& frame() const { return frame_; }
     int substeps() const { return substeps_; }
@@ -132,6 +138,9 @@ private:
     double enthru_ = 0.0;     // J, this blow's so far
     int enthru_stage_ = -1;   // the stage it counts
     std::optional<fem::HammerChain> chain_;  // a ram-cushion blow's hammer, from its impact on
+    int mean_stage_ = -1;                 // the stage the segments' impulse is summed over
+    double stage_time_ = 0.0;             // s, its steps' sum
+    std::vector<double> stage_impulse_;   // N s, 2 per segment
 };
 
 }  // namespace pilempm::coupling

@@ -50,8 +50,10 @@ std::string summary_without_wall_time(const fs::path& file) {
 
 void expect_same_outputs(const fs::path& whole, const fs::path& split) {
     ASSERT_TRUE(fs::exists(whole / "history.csv"));
-    // verification.json where the case checks, blows.csv and blow_count.csv where it drives.
-    for (const char* name : {"history.csv", "verification.json", "blows.csv", "blow_count.csv"}) {
+    // verification.json where the case checks, blows.csv and blow_count.csv where it drives,
+    // the traction profiles (their stage means summed across the stop) where a pile is coupled.
+    for (const char* name : {"history.csv", "verification.json", "blows.csv", "blow_count.csv", "pile_tractions_outer.csv",
+                             "pile_tractions_inner.csv", "pile_tractions_toe.csv"}) {
         EXPECT_EQ(fs::exists(whole / name), fs::exists(split / name)) << name;
         if (fs::exists(whole / name)) {
             EXPECT_EQ(read_file(whole / name), read_file(split / name)) << name << " differs";
