@@ -82,8 +82,8 @@ def plot_radial_stress(out_dir, probes):
 
 
 def shaft_profile(out_dir, radius):
-    # The mean over the last stage (the hold): a chattering contact's last step alternates
-    # between segments that bear all and none.
+    # The mean over the last stage (the hold), not one step's: a contact that shifts from
+    # step to step averages out; segments bare for the whole hold stay zero.
     column = "stage_mean_normal_traction_compression_Pa"
     t = read_columns(os.path.join(out_dir, "pile_tractions_outer.csv"), ["height_above_toe_m", column])
     return [(h / radius, s) for h, s in zip(t["height_above_toe_m"], t[column]) if h > 0.0]

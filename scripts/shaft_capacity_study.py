@@ -161,12 +161,13 @@ def study(args):
     with open(TEMPLATE) as f:
         template = yaml.safe_load(f)
     results = []
+    slip = "" if args.slip_friction_angle is None else f"-slip{args.slip_friction_angle:g}"
     for m in args.models:
+        slip_angle = MODELS[m][1] if args.slip_friction_angle is None else args.slip_friction_angle
         for n in args.cells_per_diameter:
             runs = {}
             for jacked in (True, False):
                 rate = f"-jack{args.jack_velocity:g}" if jacked and args.jack_velocity != VELOCITY else ""
-                slip = "" if args.slip_friction_angle is None else f"-slip{args.slip_friction_angle:g}"
                 name = f"{code(m)}-D{n}{slip}{rate}-{'jacked' if jacked else 'wished'}"
                 runs[jacked] = run_case(variant(template, m, jacked, D / n, args.jack_velocity, args.slip_friction_angle),
                                         os.path.join(args.out, name),
@@ -176,7 +177,7 @@ def study(args):
             tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
             results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1],
                             "ocr": MODELS[m][2], "cells": n, "jack_velocity": args.jack_velocity,
-                            "slip_angle": MODELS[m][1] if args.slip_friction_angle is None else args.slip_friction_angle, "qf": qf, "q0": q0, "ratio": qf / q0,
+                            "slip_angle": slip_angle, "qf": qf, "q0": q0, "ratio": qf / q0,
                             "qref": reference_capacity(template, m),
                             "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top), "tf": tf, "t0": t0,
                             "top": top})
@@ -193,7 +194,8 @@ def study(args):
 def write_table(out_dir, results):
     with open(os.path.join(out_dir, "shaft_capacity.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "jack_velocity_m_s", "slip_line_friction_angle_deg", "Qs_jacked_kN", "Qs_wished_kN",
+        w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "jack_velocity_m_s",
+                    "slip_line_friction_angle_deg", "Qs_jacked_kN", "Qs_wished_kN",
                     "Qs_ratio", "Qs_jacked_over_mu_K0_sv0_A", "Qs_wished_over_mu_K0_sv0_A",
                     "shaft_normal_traction_ratio"])
         for r in results:
