@@ -5,6 +5,7 @@ sand, D = 0.8 m, closed-ended):
 
     shaft_capacity_study.py --out DIR [--size full|reduced] [--cells-per-diameter N[,N...]]
                             [--models 1,2,...] [--jack-velocity V] [--slip-friction-angle A]
+                            [--peak-friction-offset P]
                             [--pilempm build/pilempm] [--threads N] [--check]
 
 Every model is derived from cases/jacking/shaft-capacity.yaml (model 2, jacked): the same
@@ -18,7 +19,10 @@ the grids given (a grid sequence). --jack-velocity jacks at V m/s instead of 1 (
 stays at 1 m/s; runs go to DIR/<code>-D<N>-jack<V>-jacked), to see what the rate does.
 --slip-friction-angle sets the toe slip line's friction angle to A degrees in every model
 instead of the model's phi' (runs go to DIR/<code>-D<N>-slip<A>-...), to see what the
-slip line, a numerical device, does to the phi' trend.
+slip line, a numerical device, does to the phi' trend. --peak-friction-offset bounds each
+model's sand by the Matsuoka-Nakai cone P degrees above its phi' (peak_friction_angle of
+subloading Cam clay; runs go to DIR/<code>-D<N>-peak+<P>-...); without it the case file's
+own offset holds (none: the model as published, whose dry side reaches tension).
 
 DIR/shaft_capacity.csv   per model and grid: Q_s^f, Q_s^0, their ratio, each over
                          mu K0 sigma'_v0 A (sigma'_v0 at mid-embedment, A the shaft's area),
@@ -74,10 +78,22 @@ def code(model):
     return f"{ld}-{phi:g}-{ocr:g}"
 
 
-def variant(template, model, jacked, cell, jack_velocity=VELOCITY, slip_angle=None):
+def peak_offset_of(template, peak_offset=None):
+    """Degrees from phi' to the cone that bounds the sand's stress: `peak_offset`, else the
+    template's own (its peak_friction_angle less its friction_angle); None: no bound."""
+    if peak_offset is not None:
+        return peak_offset
+    sand = template["materials"][0]
+    peak = sand.get("peak_friction_angle", 0.0)
+    return peak - sand["friction_angle"] if peak > 0.0 else None
+
+
+def variant(template, model, jacked, cell, jack_velocity=VELOCITY, slip_angle=None, peak_offset=None):
     """The case of `model` (jacked at `jack_velocity` m/s, or wished in place) on cells of `cell`
-    metres, its toe's slip line at `slip_angle` degrees (None: the model's phi')."""
+    metres, its toe's slip line at `slip_angle` degrees (None: the model's phi'), its sand's
+    stress bounded `peak_offset` degrees above phi' (None: as the template)."""
     ld, phi, ocr = MODELS[model]
+    offset = peak_offset_of(template, peak_offset)
     c = copy.deepcopy(template)
     length = ld * D
     depth = length + BELOW_TOE
@@ -89,6 +105,8 @@ def variant(template, model, jacked, cell, jack_velocity=VELOCITY, slip_angle=No
                  "cells": [nx, ny_soil + ny_above]}
     sand = c["materials"][0]
     sand["friction_angle"], sand["ocr"] = phi, ocr
+    if offset is not None:
+        sand["peak_friction_angle"] = phi + offset
     if "toe_slip_line" in c["pile"]:
         # The sand's own phi' unless a study sets it.
         c["pile"]["toe_slip_line"]["friction_angle"] = phi if slip_angle is None else slip_angle
@@ -162,6 +180,9 @@ def study(args):
         template = yaml.safe_load(f)
     results = []
     slip = "" if args.slip_friction_angle is None else f"-slip{args.slip_friction_angle:g}"
+    if args.peak_friction_offset is not None:
+        slip += f"-peak+{args.peak_friction_offset:g}"
+    offset = peak_offset_of(template, args.peak_friction_offset)
     for m in args.models:
         slip_angle = MODELS[m][1] if args.slip_friction_angle is None else args.slip_friction_angle
         for n in args.cells_per_diameter:
@@ -169,7 +190,8 @@ def study(args):
             for jacked in (True, False):
                 rate = f"-jack{args.jack_velocity:g}" if jacked and args.jack_velocity != VELOCITY else ""
                 name = f"{code(m)}-D{n}{slip}{rate}-{'jacked' if jacked else 'wished'}"
-                runs[jacked] = run_case(variant(template, m, jacked, D / n, args.jack_velocity, args.slip_friction_angle),
+                runs[jacked] = run_case(variant(template, m, jacked, D / n, args.jack_velocity, args.slip_friction_angle,
+                                                args.peak_friction_offset),
                                         os.path.join(args.out, name),
                                         args.pilempm, args.threads)
             qf, q0 = shaft_capacity(runs[True]), shaft_capacity(runs[False])
@@ -177,7 +199,8 @@ def study(args):
             tf, t0 = shaft_tractions(runs[True]), shaft_tractions(runs[False])
             results.append({"model": m, "code": code(m), "ld": MODELS[m][0], "phi": MODELS[m][1],
                             "ocr": MODELS[m][2], "cells": n, "jack_velocity": args.jack_velocity,
-                            "slip_angle": slip_angle, "qf": qf, "q0": q0, "ratio": qf / q0,
+                            "slip_angle": slip_angle,
+                            "peak_angle": "" if offset is None else MODELS[m][1] + offset, "qf": qf, "q0": q0, "ratio": qf / q0,
                             "qref": reference_capacity(template, m),
                             "sigma_ratio": mean_traction(tf, top) / mean_traction(t0, top), "tf": tf, "t0": t0,
                             "top": top})
@@ -195,11 +218,11 @@ def write_table(out_dir, results):
     with open(os.path.join(out_dir, "shaft_capacity.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["model", "code", "L_over_D", "phi_deg", "OCR", "cells_per_D", "jack_velocity_m_s",
-                    "slip_line_friction_angle_deg", "Qs_jacked_kN", "Qs_wished_kN",
+                    "slip_line_friction_angle_deg", "peak_friction_angle_deg", "Qs_jacked_kN", "Qs_wished_kN",
                     "Qs_ratio", "Qs_jacked_over_mu_K0_sv0_A", "Qs_wished_over_mu_K0_sv0_A",
                     "shaft_normal_traction_ratio"])
         for r in results:
-            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], r["jack_velocity"], r["slip_angle"],
+            w.writerow([r["model"], r["code"], r["ld"], r["phi"], r["ocr"], r["cells"], r["jack_velocity"], r["slip_angle"], r["peak_angle"],
                         f"{r['qf'] / 1e3:.3f}", f"{r['q0'] / 1e3:.3f}", f"{r['ratio']:.4f}", f"{r['qf'] / r['qref']:.4f}",
                         f"{r['q0'] / r['qref']:.4f}", f"{r['sigma_ratio']:.4f}"])
 
@@ -276,12 +299,17 @@ def main():
                     help="m/s, the jacking rate (default 1; the push stays at 1 m/s)")
     ap.add_argument("--slip-friction-angle", type=float,
                     help="degrees, the toe slip line's friction angle in every model (default: the model's phi')")
+    ap.add_argument("--peak-friction-offset", type=float,
+                    help="degrees above each model's phi' of the cone that bounds the sand's stress "
+                         "(default: as the case file; its peak_friction_angle less its friction_angle)")
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
     if not args.jack_velocity > 0.0:
         raise InputError(f"--jack-velocity: expected a rate above 0 m/s, got {args.jack_velocity}")
     if args.slip_friction_angle is not None and not 0.0 <= args.slip_friction_angle < 90.0:
         raise InputError(f"--slip-friction-angle: expected degrees in [0, 90), got {args.slip_friction_angle}")
+    if args.peak_friction_offset is not None and not 0.0 <= args.peak_friction_offset < 40.0:
+        raise InputError(f"--peak-friction-offset: expected degrees in [0, 40), got {args.peak_friction_offset}")
     try:
         args.models = [int(m) for m in args.models.split(",")]
     except ValueError:

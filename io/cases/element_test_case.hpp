@@ -27,6 +27,7 @@ inline const std::vector<std::string> element_test_check_names = {
     "subloading_critical_state",     // subloading Cam clay: q / p' = M(theta) at the end
     "subloading_smooth_transition",  // subloading Cam clay, OCR > 1: no stiffness jump
     "subloading_reduces_to_mcc",     // subloading Cam clay against modified Cam clay
+    "subloading_within_peak_cone",   // subloading Cam clay inside its bounding cone, no tension
     "subloading_oedometer",          // subloading Cam clay: NCL slope, elastic unloading
     "small_strain_stiffness_decay",  // hardening soil small
     "e50_and_failure",               // hardening soil small

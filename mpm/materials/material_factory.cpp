@@ -68,6 +68,7 @@ std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialParamet
         p.surface = m.critical_state_surface == "drucker_prager" ? CriticalStateSurface::DruckerPrager
                                                                  : CriticalStateSurface::MatsuokaNakai;
         p.a = m.subloading_a;
+        p.peak_friction_angle = m.peak_friction_angle;
         return std::make_unique<SubloadingCamClay>(p);
     }
     return std::make_unique<MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilation_angle,

@@ -26,8 +26,9 @@ struct MaterialParameters {
     // Granular flow with mu(I) friction; E and nu as above, friction_angle = atan(mu_s) for K0.
     MuIParameters mu_i;
     // Subloading Cam clay besides: a of G(rho) = a rho^2 (required) and the shape of the
-    // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager).
-    double subloading_a = 0.0;
+    // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager), and
+    // the friction angle of the cone that bounds the stress (deg; 0: none).
+    double subloading_a = 0.0, peak_friction_angle = 0.0;
     std::string critical_state_surface = "matsuoka_nakai";
     // Hardening soil small (poisson_ratio is nu_ur; friction, dilation, cohesion as above;
     // ocr and min_pressure as for Cam clay): stiffnesses in Pa, gamma_0.7, exponent m,

@@ -22,6 +22,16 @@
 // modified Cam clay at rho = 0; M(compression) = 6 sin phi / (3 - sin phi), M(extension) =
 // 6 sin phi / (3 + sin phi).
 //
+// Failure surface: the subloading surface passes through the origin, so on the dry side an
+// unloading (elastic) path leaves the Matsuoka-Nakai cone and reaches tension (a drained
+// extension from OCR 4 peaks at |q| / p' = 2.0 against M_e = 0.96, its axial stress tensile;
+// beside a jacked pile a cohesionless sand stood off the steel on hoop stress alone). The stress
+// is therefore bounded by the Matsuoka-Nakai cone of peak_friction_angle (no tension): a
+// stress the Cam clay step leaves outside it goes back to it at constant p' and Lode angle,
+// the return of an isochoric plastic potential g = q (zero dilatancy on the cone), p_c
+// unchanged, the plastic strain counted. peak_friction_angle 0: no bound (the model as
+// published).
+//
 // Integration as ModifiedCamClay: explicit modified Euler with error-controlled substeps
 // (Sloan et al. 2001) and drift correction onto the subloading surface; an unloading
 // increment is elastic (hypoelastic, exact kappa line) and the subloading surface shrinks to
@@ -44,6 +54,7 @@ struct SubloadingCamClayParameters {
     double void_ratio = 0.62;      // initial e (for points set up from stress)
     double ocr = 1.0;              // p_c / p_s at set-up (1: on the normal surface, rho = 0)
     double a = 2000.0;             // subloading parameter of G(rho) = a rho^2
+    double peak_friction_angle = 0.0;  // deg, the bounding cone (>= friction_angle); 0: none
     double p_min = 1.0e3;          // Pa: stiffness floor and least p_c
     double tolerance = 1e-6;       // relative local error of a substep (and |f| / p_s^2)
 };
@@ -68,6 +79,8 @@ public:
     // cos 3theta (1: triaxial compression, -1: extension).
     double critical_state_ratio(const double* stress) const;
     double critical_state_ratio_at(double cos3theta) const;
+    // q / p' on the bounding cone at cos 3theta (0 when there is none).
+    double peak_stress_ratio_at(double cos3theta) const;
     // p_s of the surface similar to the normal one through the stress (0 at p' <= 0).
     double subloading_size(const double* stress) const;
     // The subloading surface function q^2 / M^2 + p (p - p_c exp(-rho / (lambda - kappa))).
@@ -77,6 +90,13 @@ public:
     const SubloadingCamClayParameters& parameters() const { return par_; }
 
 private:
+    // A Matsuoka-Nakai cone (or a circular one): M in compression, I1 I2 / I3, (M_e / M_c)^4.
+    struct Cone {
+        double M_c = 0.0, k = 0.0, alpha4 = 1.0;
+        bool circular = false;
+        static Cone of_angle(double degrees, bool circular);
+        double ratio_at(double cos3theta) const;
+    };
     struct Point {
         double s[6];
         double pc, rho, v, eps_p;
@@ -96,11 +116,13 @@ private:
     // Elasto-plastic tangent increments of stress, p_c, rho, accumulated plastic strain.
     double plastic_rate(const Point& pt, const double* de, double* ds, double& dpc, double& drho, double& deps) const;
     void correct_drift(Point& pt) const;
+    void bound_by_peak_cone(Point& pt) const;
     double bulk(double p, double v) const;
 
     SubloadingCamClayParameters par_;
     double g_over_k_;               // G / K from Poisson's ratio
-    double M_c_, k_mn_, alpha4_;    // M in compression; Matsuoka-Nakai I1 I2 / I3; (M_e / M_c)^4
+    double M_c_, k_mn_;             // M in compression; Matsuoka-Nakai I1 I2 / I3
+    Cone critical_, peak_;          // the critical state cone; the bounding one (M_c 0: none)
     double p_floor_;                // least p_s for rho (zero stress gives a finite rho)
     static constexpr double p_ref_ = 100e3;  // Pa: where p_wave_modulus() is stated
 };

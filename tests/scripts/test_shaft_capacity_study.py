@@ -40,6 +40,14 @@ def test_variants(template):
     assert [s["name"] for s in wished["stages"]] == ["nil", "push"]
     assert wished["pile"]["toe_slip_line"]["friction_angle"] == 40.0  # the model's phi' by default
     assert study.variant(template, 1, True, 0.2)["materials"][0]["friction_angle"] == 20.0
+    # The bounding cone keeps its offset above each model's phi': given, or the template's.
+    assert study.variant(template, 1, True, 0.2, peak_offset=5.0)["materials"][0]["peak_friction_angle"] == 25.0
+    bounded = yaml.safe_load(yaml.safe_dump(template))
+    bounded["materials"][0]["peak_friction_angle"] = bounded["materials"][0]["friction_angle"] + 3.0
+    assert study.variant(bounded, 1, False, 0.2)["materials"][0]["peak_friction_angle"] == 23.0
+    unbounded = yaml.safe_load(yaml.safe_dump(template))
+    unbounded["materials"][0].pop("peak_friction_angle", None)
+    assert "peak_friction_angle" not in study.variant(unbounded, 1, True, 0.2)["materials"][0]
 
 
 def test_reference_capacity():
@@ -77,7 +85,7 @@ def test_check():
 def test_bad_options(tmp):
     script = os.path.join(SCRIPTS, "shaft_capacity_study.py")
     for bad in (["--slip-friction-angle", "95"], ["--jack-velocity", "-1"], ["--models", "7"],
-                ["--cells-per-diameter", "0"]):
+                ["--cells-per-diameter", "0"], ["--peak-friction-offset", "-1"]):
         run = subprocess.run([sys.executable, script, "--out", tmp, "--pilempm", "/nonexistent"] + bad,
                              capture_output=True, text=True)
         assert run.returncode == 2, (bad, run.returncode, run.stderr)

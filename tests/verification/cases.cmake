@@ -36,6 +36,7 @@ pilempm_case_test(verify_element_test_hypoplastic cases/element-tests/hypoplasti
 pilempm_case_test(verify_mpm_k0_hypoplastic cases/verification/mpm-k0-hypoplastic.yaml verification)
 pilempm_case_test(verify_element_test_subloading_cam_clay cases/element-tests/subloading-cam-clay-fontainebleau.yaml verification)
 pilempm_case_test(verify_element_test_subloading_cam_clay_ocr4 cases/element-tests/subloading-cam-clay-fontainebleau-ocr4.yaml verification)
+pilempm_case_test(verify_element_test_subloading_cam_clay_peak_cone cases/element-tests/subloading-cam-clay-fontainebleau-ocr4-peak-cone.yaml verification)
 pilempm_case_test(verify_element_test_hardening_soil_small cases/element-tests/hardening-soil-small-north-sea-dense-sand.yaml verification)
 pilempm_case_test(verify_mpm_k0_hardening_soil_small cases/verification/mpm-k0-hardening-soil-small.yaml verification)
 # Saturated soil, explicit v-w (issue 12): Terzaghi, the undrained and the fast P-wave,

@@ -32,6 +32,7 @@ std::vector<VerificationCheck> element_test_checks(const std::string& name, cons
         {"subloading_critical_state", subloading_critical_state},
         {"subloading_smooth_transition", subloading_smooth_transition},
         {"subloading_reduces_to_mcc", subloading_reduces_to_mcc},
+        {"subloading_within_peak_cone", subloading_within_peak_cone},
         {"subloading_oedometer", subloading_oedometer},
         {"small_strain_stiffness_decay", small_strain_stiffness_decay},
         {"e50_and_failure", e50_and_failure},

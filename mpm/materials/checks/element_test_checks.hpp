@@ -40,6 +40,7 @@ std::vector<VerificationCheck> isotropic_compression_line(const ElementTestConte
 std::vector<VerificationCheck> subloading_critical_state(const ElementTestContext& ctx);
 std::vector<VerificationCheck> subloading_smooth_transition(const ElementTestContext& ctx);
 std::vector<VerificationCheck> subloading_reduces_to_mcc(const ElementTestContext& ctx);
+std::vector<VerificationCheck> subloading_within_peak_cone(const ElementTestContext& ctx);
 std::vector<VerificationCheck> subloading_oedometer(const ElementTestContext& ctx);
 std::vector<VerificationCheck> small_strain_stiffness_decay(const ElementTestContext& ctx);
 std::vector<VerificationCheck> e50_and_failure(const ElementTestContext& ctx);

@@ -138,6 +138,7 @@ std::vector<VerificationCheck> subloading_reduces_to_mcc(const ElementTestContex
     MaterialParameters sub_input = m, mcc_input = m;
     sub_input.critical_state_surface = "drucker_prager";
     sub_input.subloading_a = 1e7;
+    sub_input.peak_friction_angle = 0.0;  // MCC has no bounding cone
     mcc_input.model = "modified_cam_clay";
     const auto sub_model = make_constitutive_model(sub_input), mcc_model = make_constitutive_model(mcc_input);
     const ConstitutiveModel &sub = *sub_model, &mcc = *mcc_model;
@@ -164,6 +165,32 @@ std::vector<VerificationCheck> subloading_reduces_to_mcc(const ElementTestContex
     }
     if (out.empty()) throw std::invalid_argument("subloading_reduces_to_mcc needs a triaxial test in the case");
     return out;
+}
+
+// With a bounding cone (peak_friction_angle): no step of any triaxial test passes it, |q| / p'
+// <= 6 sin phi_peak / (3 -+ sin phi_peak) (Matsuoka-Nakai at the triaxial meridians, closed
+// form), and no principal stress is tensile.
+std::vector<VerificationCheck> subloading_within_peak_cone(const ElementTestContext& ctx) {
+    ctx.require_model(kModel, "subloading_within_peak_cone");
+    MaterialParameters peak = ctx.c.material;
+    if (!(peak.peak_friction_angle > 0.0))
+        throw std::invalid_argument("subloading_within_peak_cone needs the material's peak_friction_angle");
+    peak.friction_angle = peak.peak_friction_angle;
+    double Mc, Me;
+    triaxial_ratios(peak, Mc, Me);
+    double worst = 0.0, least = 1e300;
+    for (const auto& r : ctx.results) {
+        if (!triaxial(r)) continue;
+        for (const auto& rec : r.path) {
+            if (rec.p > 0.0) worst = std::max(worst, std::abs(rec.q) / rec.p / (rec.q >= 0.0 ? Mc : Me));
+            least = std::min({least, rec.axial_stress, rec.lateral_stress});
+        }
+    }
+    if (least == 1e300) throw std::invalid_argument("subloading_within_peak_cone needs a triaxial test in the case");
+    auto within = make_check("peak_cone_largest_ratio_over_bound", worst, 1.0, 1e-9, false,
+                             "max |q| / p' over 6 sin phi_peak / (3 -+ sin phi_peak), every step");
+    within.passed = worst <= 1.0 + 1e-9;
+    return {within, at_least("peak_cone_least_principal_stress_Pa", least, 0.0, "no tension (compression positive)")};
 }
 
 }  // namespace pilempm::mpm

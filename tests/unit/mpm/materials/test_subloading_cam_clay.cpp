@@ -359,4 +359,76 @@ TEST(SubloadingCamClay, MaterialKeysAreValidated) {
     EXPECT_NE(message(bad).find("critical_state_surface"), std::string::npos) << message(bad);
     EXPECT_EQ(read(base + ", subloading_a: 10.0, critical_state_surface: drucker_prager}").critical_state_surface,
               "drucker_prager");
+    EXPECT_EQ(m.peak_friction_angle, 0.0) << "no bound unless asked";
+    EXPECT_EQ(read(base + ", subloading_a: 2000.0, peak_friction_angle: 40.0}").peak_friction_angle, 40.0);
+    const std::string below = base + ", subloading_a: 2000.0, peak_friction_angle: 30.0}";  // under phi_cs
+    EXPECT_NE(message(below).find("peak_friction_angle"), std::string::npos) << message(below);
+}
+
+// The bounding cone (peak_friction_angle): the subloading surface runs through the origin,
+// so a drained extension from OCR 4 of the model as published peaks beyond any frictional
+// cone, its axial stress tensile. Bounded by the Matsuoka-Nakai cone of phi_peak, no step of
+// the same test passes 6 sin phi_peak / (3 + sin phi_peak) (the closed form at extension)
+// nor carries tension; with phi_peak above phi_cs the peak does rise above M_e of phi_cs.
+TEST(SubloadingCamClay, PeakConeBoundsTheStressAndExcludesTension) {
+    auto extension = [](double peak) {
+        SubloadingCamClayParameters p = seed_parameters(4.0);
+        p.peak_friction_angle = peak;
+        return run_from_isotropic(SubloadingCamClay(p), 150e3, {drained(-0.4, 4000)}).path;
+    };
+    auto least_axial = [](const std::vector<ElementRecord>& path) {
+        double least = 1e300;
+        for (const auto& r : path) least = std::min(least, r.axial_stress);
+        return least;
+    };
+    auto largest_ratio = [](const std::vector<ElementRecord>& path) {
+        double most = 0.0;
+        for (const auto& r : path) most = std::max(most, std::abs(r.q) / r.p);
+        return most;
+    };
+    EXPECT_LT(least_axial(extension(0.0)), 0.0) << "the unbounded model reaches tension on this path";
+    for (double peak : {35.0, 45.0}) {
+        const double s = std::sin(peak * M_PI / 180.0), Me_peak = 6.0 * s / (3.0 + s);
+        const auto path = extension(peak);
+        EXPECT_LE(largest_ratio(path), Me_peak * (1.0 + 1e-9)) << "phi_peak " << peak;
+        EXPECT_GT(least_axial(path), 0.0) << "phi_peak " << peak;
+        if (peak > 35.0) EXPECT_GT(largest_ratio(path), 1.05 * kMe) << "a peak above the critical state";
+    }
+}
+
+// The return onto the cone keeps p' and the Lode angle (an isochoric potential g = q): a
+// stress far outside the cone in a general direction, given no strain, lands on the cone at
+// its own p' and cos 3theta, and the plastic strain counts the deviator's drop.
+TEST(SubloadingCamClay, ReturnToThePeakConeKeepsPressureAndLodeAngle) {
+    SubloadingCamClayParameters par = seed_parameters(1.0);
+    par.peak_friction_angle = 40.0;
+    const SubloadingCamClay model(par);
+    const double start[6] = {-120e3, -10e3, -35e3, 30e3, -5e3, 8e3};  // I1 I2 / I3 far above k
+    double s[6], state[4];
+    std::copy(start, start + 6, s);
+    model.initialise_state(s, state);
+    const double zero[6] = {0, 0, 0, 0, 0, 0};
+    const int point = 0;
+    model.update(1, &point, zero, s, state, 4);
+    auto invariants = [](const double* t, double& p, double& q, double& c) {
+        p = -(t[0] + t[1] + t[2]) / 3.0;
+        double d[6] = {t[0] + p, t[1] + p, t[2] + p, t[3], t[4], t[5]};
+        const double J2 = 0.5 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + d[3] * d[3] + d[4] * d[4] + d[5] * d[5];
+        const double J3 = d[0] * (d[1] * d[2] - d[4] * d[4]) - d[3] * (d[3] * d[2] - d[4] * d[5]) + d[5] * (d[3] * d[4] - d[1] * d[5]);
+        q = std::sqrt(3.0 * J2);
+        c = -13.5 * J3 / (q * q * q);
+    };
+    double p0, q0, c0, p1, q1, c1;
+    invariants(start, p0, q0, c0);
+    invariants(s, p1, q1, c1);
+    // Matsuoka-Nakai on the returned stress, principal-free: I1 I2 / I3 = (9 - sin^2) / (1 - sin^2).
+    const double a = -s[0], b = -s[1], cc = -s[2], xy = -s[3], yz = -s[4], zx = -s[5];  // of -sigma
+    const double I1 = a + b + cc, I2 = a * b + b * cc + cc * a - xy * xy - yz * yz - zx * zx;
+    const double I3 = a * (b * cc - yz * yz) - xy * (xy * cc - yz * zx) + zx * (xy * yz - b * zx);
+    const double sn = std::sin(40.0 * M_PI / 180.0);
+    EXPECT_NEAR(I1 * I2 / I3, (9.0 - sn * sn) / (1.0 - sn * sn), 1e-6 * (9.0 - sn * sn) / (1.0 - sn * sn));
+    EXPECT_NEAR(p1, p0, 1e-9 * p0);
+    EXPECT_NEAR(c1, c0, 1e-9);
+    EXPECT_LT(q1, q0);
+    EXPECT_GT(state[3], 0.0);
 }
