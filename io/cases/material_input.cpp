@@ -141,17 +141,17 @@ MaterialInput read_material(MapReader m, bool with_density) {
         mat.void_ratio = m.number("void_ratio", positive("initial void ratio"));
         mat.ocr = m.number_or("ocr", 1.0, {"an overconsolidation ratio >= 1", [](double x) { return x >= 1.0; }});
         mat.min_pressure = m.number_or("min_pressure", 1e3, positive("stiffness floor in Pa"));
+        // The stress stays inside this Matsuoka-Nakai cone (no tension); 0, the default, is the
+        // model as published, whose dry side reaches tension (README, subloading Cam clay).
+        mat.peak_friction_angle = m.number_or(
+            "peak_friction_angle", 0.0,
+            {"0 (no bound) or an angle from friction_angle to 89 deg",
+             [phi = mat.friction_angle](double x) { return x == 0.0 || (x >= phi && x < 89.0); }});
         if (mat.model == "subloading_cam_clay") {
             // No default: a sets how fast the overconsolidated soil reaches the normal surface.
             mat.subloading_a = m.number("subloading_a", positive("the subloading parameter a of G(rho) = a rho^2"));
             mat.critical_state_surface = m.choice_or("critical_state_surface", "matsuoka_nakai",
                                                      {"matsuoka_nakai", "drucker_prager"});
-            // The stress stays inside this cone (no tension); 0, the default, is the model as
-            // published, whose dry side reaches tension (README, subloading Cam clay).
-            mat.peak_friction_angle = m.number_or(
-                "peak_friction_angle", 0.0,
-                {"0 (no bound) or an angle from friction_angle to 89 deg",
-                 [phi = mat.friction_angle](double x) { return x == 0.0 || (x >= phi && x < 89.0); }});
         }
     } else if (mat.model == "hypoplastic") {
         read_hypoplastic(m, mat);

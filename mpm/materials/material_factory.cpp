@@ -50,6 +50,7 @@ std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialParamet
         CamClayParameters p;
         set_critical_state_common(m, p);
         p.M = m.critical_state_ratio;
+        p.peak_friction_angle = m.peak_friction_angle;
         return std::make_unique<ModifiedCamClay>(p);
     }
     if (m.model == "hypoplastic") {

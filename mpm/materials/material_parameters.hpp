@@ -16,7 +16,9 @@ struct MaterialParameters {
     double density = 0.0, youngs_modulus = 0.0, poisson_ratio = 0.3;
     double friction_angle = 0.0, dilation_angle = 0.0, cohesion = 0.0, tension_cutoff = 0.0;
     // Modified (and subloading) Cam clay: NCL and unloading slopes, critical state ratio (or friction_angle),
-    // initial void ratio, OCR, the stiffness floor.
+    // initial void ratio, OCR, the stiffness floor; the friction angle of the Matsuoka-Nakai cone
+    // that bounds the stress (deg; 0: none).
+    double peak_friction_angle = 0.0;
     double lambda = 0.0, kappa = 0.0, critical_state_ratio = 0.0, void_ratio = 0.0, ocr = 1.0, min_pressure = 1e3;
     // Hypoplastic (von Wolffersdorff) with intergranular strain (Niemunis & Herle); phi_c,
     // e0 and p_min come from friction_angle, void_ratio and min_pressure.
@@ -26,9 +28,8 @@ struct MaterialParameters {
     // Granular flow with mu(I) friction; E and nu as above, friction_angle = atan(mu_s) for K0.
     MuIParameters mu_i;
     // Subloading Cam clay besides: a of G(rho) = a rho^2 (required) and the shape of the
-    // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager), and
-    // the friction angle of the cone that bounds the stress (deg; 0: none).
-    double subloading_a = 0.0, peak_friction_angle = 0.0;
+    // critical state surface in the deviatoric plane (matsuoka_nakai | drucker_prager).
+    double subloading_a = 0.0;
     std::string critical_state_surface = "matsuoka_nakai";
     // Hardening soil small (poisson_ratio is nu_ur; friction, dilation, cohesion as above;
     // ocr and min_pressure as for Cam clay): stiffnesses in Pa, gamma_0.7, exponent m,

@@ -22,7 +22,10 @@ ModifiedCamClay::ModifiedCamClay(const CamClayParameters& p) : par_(p) {
         throw std::invalid_argument("modified Cam clay: -1 < nu < 0.5");
     if (!(p.void_ratio > 0.0) || !(p.ocr >= 1.0) || !(p.p_min > 0.0) || !(p.tolerance > 0.0))
         throw std::invalid_argument("modified Cam clay: e > 0, OCR >= 1, p_min > 0, tolerance > 0");
+    if (!(p.peak_friction_angle >= 0.0 && p.peak_friction_angle < 89.0))
+        throw std::invalid_argument("modified Cam clay: peak friction angle 0 (none) or below 89 deg");
     g_over_k_ = critical_state::shear_to_bulk(p.poisson_ratio);
+    if (p.peak_friction_angle > 0.0) peak_ = FrictionCone::of_angle(p.peak_friction_angle, false);
 }
 
 double ModifiedCamClay::yield_function(const double* s, double pc) const {
@@ -163,6 +166,7 @@ void ModifiedCamClay::update(int count, const int* points, const double* de, dou
         pt.pc = std::max(st[0], par_.p_min);
         pt.v = 1.0 + st[1];
         update_point(e, pt);
+        if (peak_.exists()) peak_.return_to(pt.s);  // inside the ellipse: p_c stays
         std::copy(pt.s, pt.s + 6, s);
         st[0] = pt.pc;
         st[1] = pt.v * std::exp(e[0] + e[1] + e[2]) - 1.0;  // v follows the volume

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "mpm/materials/constitutive_model.hpp"
+#include "mpm/materials/friction_cone.hpp"
 
 namespace pilempm::mpm {
 
@@ -26,6 +27,9 @@ struct CamClayParameters {
     double ocr = 1.0;            // isotropic overconsolidation ratio p_c / p_y at set-up
     double p_min = 1.0e3;        // Pa: stiffness floor and least p_c
     double tolerance = 1e-6;     // relative local error of a substep (and |f| / p_c^2)
+    // deg: the Matsuoka-Nakai cone that bounds the stress (no tension on the dry side, as
+    // subloading Cam clay's); 0: none.
+    double peak_friction_angle = 0.0;
 };
 
 class ModifiedCamClay final : public ConstitutiveModel {
@@ -62,6 +66,7 @@ private:
     double bulk(double p, double v) const;
 
     CamClayParameters par_;
+    FrictionCone peak_;  // the cone bounding the stress, if any
     double g_over_k_;     // G / K from Poisson's ratio
     static constexpr double p_ref_ = 100e3;  // Pa: where p_wave_modulus() is stated
 };

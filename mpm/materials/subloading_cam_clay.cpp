@@ -53,16 +53,11 @@ SubloadingCamClay::SubloadingCamClay(const SubloadingCamClayParameters& p) : par
         throw std::invalid_argument("subloading Cam clay: peak friction angle 0 (none) or from the friction angle to 89 deg");
     g_over_k_ = critical_state::shear_to_bulk(p.poisson_ratio);
     const bool circular = p.surface == CriticalStateSurface::DruckerPrager;
-    critical_ = Cone::of_angle(p.friction_angle, circular);
-    if (p.peak_friction_angle > 0.0) peak_ = Cone::of_angle(p.peak_friction_angle, circular);
+    critical_ = FrictionCone::of_angle(p.friction_angle, circular);
+    if (p.peak_friction_angle > 0.0) peak_ = FrictionCone::of_angle(p.peak_friction_angle, false);  // no tension
     M_c_ = critical_.M_c;
     k_mn_ = critical_.k;
     p_floor_ = 1e-3 * p.p_min;
-}
-
-SubloadingCamClay::Cone SubloadingCamClay::Cone::of_angle(double degrees, bool circular) {
-    const double s = std::sin(degrees * std::numbers::pi / 180.0);
-    return {6.0 * s / (3.0 - s), (9.0 - s * s) / (1.0 - s * s), std::pow((3.0 - s) / (3.0 + s), 4), circular};
 }
 
 const char* SubloadingCamClay::state_name(int k) const {
@@ -70,28 +65,9 @@ const char* SubloadingCamClay::state_name(int k) const {
     return k >= 0 && k < 4 ? names[k] : "";
 }
 
-// Matsuoka-Nakai at stress ratio eta and c = cos 3theta: I1 I2 = k I3 with I1 = 3p,
-// I2 = 3p^2 - q^2/3, I3 = p^3 - p q^2/3 + 2 c q^3/27 gives, divided by p^3,
-//   g(eta) = (k - 9) + (1 - k/3) eta^2 + (2 k c / 27) eta^3 = 0.
-// Halley's method from Sheng et al.'s (2000) fit, which is exact at c = +-1: 2 iterations to
-// round-off up to phi = 50 deg.
-double SubloadingCamClay::Cone::ratio_at(double c) const {
-    if (circular) return M_c;
-    c = std::clamp(c, -1.0, 1.0);
-    double eta = M_c * std::sqrt(std::sqrt(2.0 * alpha4 / (1.0 + alpha4 - (1.0 - alpha4) * c)));
-    const double A = 2.0 * k * c / 27.0, B = 1.0 - k / 3.0, C = k - 9.0;
-    for (int it = 0; it < 20; ++it) {  // Halley: the error is cubed each time
-        const double g = C + eta * eta * (B + A * eta), g1 = eta * (2.0 * B + 3.0 * A * eta), g2 = 2.0 * B + 6.0 * A * eta;
-        const double d = 2.0 * g * g1 / (2.0 * g1 * g1 - g * g2);
-        eta -= d;
-        if (std::abs(d) < 1e-5 * eta) break;  // the next error ~ d^3: at round-off
-    }
-    return eta;
-}
-
 double SubloadingCamClay::critical_state_ratio_at(double c) const { return critical_.ratio_at(c); }
 
-double SubloadingCamClay::peak_stress_ratio_at(double c) const { return peak_.M_c > 0.0 ? peak_.ratio_at(c) : 0.0; }
+double SubloadingCamClay::peak_stress_ratio_at(double c) const { return peak_.exists() ? peak_.ratio_at(c) : 0.0; }
 
 // M and what its Lode dependence adds to df/dsigma: q^2 d(M^-2)/dsigma = -2 M'/M^3 q^2
 // dc/dsigma, with c = -27 J3 / (2 q^3) (tension-positive deviator: compression gives c = 1)
@@ -314,29 +290,14 @@ void SubloadingCamClay::update_point(const double* de, Point& pt) const {
     }
 }
 
-// Back onto the bounding cone at constant p' and Lode angle (the deviator scaled): the return
-// of g = q, whose plastic strain is the deviator's drop over 2G. A point at p' <= 0 carries
-// nothing (cohesionless).
+// Back onto the bounding cone (FrictionCone::return_to); its plastic strain is the
+// deviator's drop over 2G.
 void SubloadingCamClay::bound_by_peak_cone(Point& pt) const {
-    if (!(peak_.M_c > 0.0)) return;
+    if (!peak_.exists()) return;
     const double p = mean_pressure(pt.s);
-    if (!(p > 0.0)) {
-        const double dev = norm6(deviator(pt.s, p).s);
-        const double G = g_over_k_ * bulk(0.0, pt.v);
-        std::fill(pt.s, pt.s + 6, 0.0);
-        pt.eps_p += dev / (2.0 * G);
-        pt.rho = rho_of_stress(pt.s, pt.pc);
-        return;
-    }
-    const double q = deviator_q(pt.s, p);
-    if (!(q > 0.0)) return;
-    const Deviator d = deviator(pt.s, p);
-    const double M = peak_.ratio_at(std::clamp(-13.5 * d.J3 / (q * q * q), -1.0, 1.0));
-    if (q <= M * p) return;
-    const double keep = M * p / q;
-    for (int i = 0; i < 3; ++i) pt.s[i] = -p + keep * d.s[i];
-    for (int i = 3; i < 6; ++i) pt.s[i] = keep * d.s[i];
-    pt.eps_p += (1.0 - keep) * norm6(d.s) / (2.0 * g_over_k_ * bulk(p, pt.v));
+    const double removed = peak_.return_to(pt.s);
+    if (removed == 0.0) return;
+    pt.eps_p += removed / (2.0 * g_over_k_ * bulk(p, pt.v));
     pt.rho = rho_of_stress(pt.s, pt.pc);
 }
 

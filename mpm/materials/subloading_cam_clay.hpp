@@ -40,6 +40,7 @@
 #include <string>
 
 #include "mpm/materials/constitutive_model.hpp"
+#include "mpm/materials/friction_cone.hpp"
 
 namespace pilempm::mpm {
 
@@ -90,13 +91,6 @@ public:
     const SubloadingCamClayParameters& parameters() const { return par_; }
 
 private:
-    // A Matsuoka-Nakai cone (or a circular one): M in compression, I1 I2 / I3, (M_e / M_c)^4.
-    struct Cone {
-        double M_c = 0.0, k = 0.0, alpha4 = 1.0;
-        bool circular = false;
-        static Cone of_angle(double degrees, bool circular);
-        double ratio_at(double cos3theta) const;
-    };
     struct Point {
         double s[6];
         double pc, rho, v, eps_p;
@@ -122,7 +116,7 @@ private:
     SubloadingCamClayParameters par_;
     double g_over_k_;               // G / K from Poisson's ratio
     double M_c_, k_mn_;             // M in compression; Matsuoka-Nakai I1 I2 / I3
-    Cone critical_, peak_;          // the critical state cone; the bounding one (M_c 0: none)
+    FrictionCone critical_, peak_;  // the critical state cone; the bounding one (if any)
     double p_floor_;                // least p_s for rho (zero stress gives a finite rho)
     static constexpr double p_ref_ = 100e3;  // Pa: where p_wave_modulus() is stated
 };

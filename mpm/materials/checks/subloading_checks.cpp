@@ -138,7 +138,7 @@ std::vector<VerificationCheck> subloading_reduces_to_mcc(const ElementTestContex
     MaterialParameters sub_input = m, mcc_input = m;
     sub_input.critical_state_surface = "drucker_prager";
     sub_input.subloading_a = 1e7;
-    sub_input.peak_friction_angle = 0.0;  // MCC has no bounding cone
+    sub_input.peak_friction_angle = mcc_input.peak_friction_angle = 0.0;  // the models as published
     mcc_input.model = "modified_cam_clay";
     const auto sub_model = make_constitutive_model(sub_input), mcc_model = make_constitutive_model(mcc_input);
     const ConstitutiveModel &sub = *sub_model, &mcc = *mcc_model;
@@ -176,6 +176,7 @@ std::vector<VerificationCheck> subloading_within_peak_cone(const ElementTestCont
     if (!(peak.peak_friction_angle > 0.0))
         throw std::invalid_argument("subloading_within_peak_cone needs the material's peak_friction_angle");
     peak.friction_angle = peak.peak_friction_angle;
+    peak.critical_state_surface = "matsuoka_nakai";  // the bound is Matsuoka-Nakai whatever the surface
     double Mc, Me;
     triaxial_ratios(peak, Mc, Me);
     double worst = 0.0, least = 1e300;

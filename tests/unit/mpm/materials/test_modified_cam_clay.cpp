@@ -125,3 +125,28 @@ TEST(ModifiedCamClay, ZeroStressStaysFinite) {
         ASSERT_TRUE(std::isfinite(st[0]) && std::isfinite(st[1]));
     }
 }
+
+// The bounding cone (peak_friction_angle), as subloading Cam clay's: the ellipse runs through
+// the origin, so a drained extension from OCR 8 reaches tension in the model as published;
+// bounded by the Matsuoka-Nakai cone of 40 deg, no step passes 6 sin 40 / (3 + sin 40) (the
+// closed form at extension) and no stress is tensile.
+TEST(ModifiedCamClay, PeakConeBoundsTheStressAndExcludesTension) {
+    auto extension = [](double peak) {
+        CamClayParameters p = seed_parameters();
+        p.ocr = 8.0;
+        p.peak_friction_angle = peak;
+        return run_from_isotropic(ModifiedCamClay(p), 150e3,
+                                  {ElementLeg::AxialStrain, ElementLeg::LateralStress, -0.3, 3000}).path;
+    };
+    double least_free = 1e300;
+    for (const auto& r : extension(0.0)) least_free = std::min(least_free, r.axial_stress);
+    EXPECT_LT(least_free, 0.0) << "the unbounded model reaches tension on this path";
+    const double s = std::sin(40.0 * M_PI / 180.0), Me = 6.0 * s / (3.0 + s);
+    double most = 0.0, least = 1e300;
+    for (const auto& r : extension(40.0)) {
+        most = std::max(most, std::abs(r.q) / r.p);
+        least = std::min(least, r.axial_stress);
+    }
+    EXPECT_LE(most, Me * (1.0 + 1e-9));
+    EXPECT_GT(least, 0.0);
+}
