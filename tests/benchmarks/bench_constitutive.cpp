@@ -82,6 +82,16 @@ void BM_StressUpdateSubloadingCamClay(benchmark::State& s) {
     run(s, model, 100e3);
 }
 
+// The same, its stress bounded by the Matsuoka-Nakai cone of its phi' (the test of the cone,
+// a Lode-angle solve, on every point; the return where it is outside).
+void BM_StressUpdateSubloadingCamClayBounded(benchmark::State& s) {
+    SubloadingCamClayParameters p;
+    p.ocr = 2.0;
+    p.peak_friction_angle = p.friction_angle;
+    const SubloadingCamClay model(p);
+    run(s, model, 100e3);
+}
+
 // Seed 001, Table 2, D_R = 99 %: the shear surface and the cap both load in this path.
 void BM_StressUpdateHardeningSoilSmall(benchmark::State& s) {
     HardeningSoilSmallParameters p;
@@ -116,6 +126,7 @@ BENCHMARK(BM_StressUpdateHypoplasticSmallIncrement)->Unit(benchmark::kMillisecon
 BENCHMARK(BM_StressUpdateMohrCoulomb)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateModifiedCamClay)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateSubloadingCamClay)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StressUpdateSubloadingCamClayBounded)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateHardeningSoilSmall)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateHardeningSoilSmallSmallIncrement)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StressUpdateHardeningSoilSmallUnloading)->Unit(benchmark::kMillisecond);
