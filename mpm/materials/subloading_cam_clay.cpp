@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "mpm/materials/substepping.hpp"
@@ -66,8 +65,6 @@ const char* SubloadingCamClay::state_name(int k) const {
 }
 
 double SubloadingCamClay::critical_state_ratio_at(double c) const { return critical_.ratio_at(c); }
-
-double SubloadingCamClay::peak_stress_ratio_at(double c) const { return peak_.exists() ? peak_.ratio_at(c) : 0.0; }
 
 // M and what its Lode dependence adds to df/dsigma: q^2 d(M^-2)/dsigma = -2 M'/M^3 q^2
 // dc/dsigma, with c = -27 J3 / (2 q^3) (tension-positive deviator: compression gives c = 1)

@@ -80,8 +80,6 @@ public:
     // cos 3theta (1: triaxial compression, -1: extension).
     double critical_state_ratio(const double* stress) const;
     double critical_state_ratio_at(double cos3theta) const;
-    // q / p' on the bounding cone at cos 3theta (0 when there is none).
-    double peak_stress_ratio_at(double cos3theta) const;
     // p_s of the surface similar to the normal one through the stress (0 at p' <= 0).
     double subloading_size(const double* stress) const;
     // The subloading surface function q^2 / M^2 + p (p - p_c exp(-rho / (lambda - kappa))).
